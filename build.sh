@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build library, tools, chapters and exercises,
+# regenerate every figure, build the API reference and the book.
+set -euo pipefail
+cd "$(dirname "$0")"
+scripts/deps.sh
+cmake --preset default
+cmake --build --preset default
+cmake --build --preset default --target docs
+echo "built: build/default/bin/t2 (try: build/default/bin/t2 --help)"

@@ -1,0 +1,19 @@
+#pragma once
+/// @file io.hpp
+/// @brief Files written atomically: a reader sees the old file or the whole new one, never half.
+
+#include <filesystem>
+#include <string_view>
+
+namespace t2 {
+
+/// Writes `content` to `path` through a temporary file in the same directory and a rename, so
+/// that an error (or a crash) never leaves a half-written file. Creates missing parent
+/// directories. Throws `std::system_error` on failure, leaving any existing file untouched.
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// Writes `content` only if the file does not already hold exactly that; returns true when it
+/// wrote. Keeps timestamps of unchanged figures, so builds and `git status` stay quiet.
+bool update_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+}  // namespace t2

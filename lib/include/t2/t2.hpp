@@ -1,0 +1,15 @@
+#pragma once
+/// @file t2.hpp
+/// @brief Everything of the t2 library: include this one header.
+///
+/// Each header holds one concept; they are listed here in the order the course teaches them.
+
+#include "t2/sign.hpp"
+#include "t2/error.hpp"
+#include "t2/number.hpp"
+#include "t2/filter.hpp"
+#include "t2/t1.hpp"
+#include "t2/point.hpp"
+#include "t2/orient.hpp"
+#include "t2/line.hpp"
+#include "t2/io.hpp"

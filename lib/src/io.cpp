@@ -1,0 +1,66 @@
+#include "t2/io.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <system_error>
+
+namespace t2 {
+
+namespace fs = std::filesystem;
+
+namespace {
+[[noreturn]] void fail(const std::string& what) {
+  throw std::system_error(errno, std::generic_category(), what);
+}
+}  // namespace
+
+void write_file_atomically(const fs::path& path, std::string_view content) {
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  fs::create_directories(dir);
+  std::string tmpl = (dir / ("." + path.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) fail("cannot create a temporary file beside " + path.string());
+  const char* p = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int saved = errno;
+      ::close(fd);
+      ::unlink(tmpl.c_str());
+      errno = saved;
+      fail("cannot write " + path.string());
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  if (::fchmod(fd, 0644) != 0 || ::fsync(fd) != 0 || ::close(fd) != 0) {
+    ::unlink(tmpl.c_str());
+    fail("cannot write " + path.string());
+  }
+  if (::rename(tmpl.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(tmpl.c_str());
+    errno = saved;
+    fail("cannot replace " + path.string());
+  }
+}
+
+bool update_file_atomically(const fs::path& path, std::string_view content) {
+  std::ifstream in(path, std::ios::binary);
+  if (in) {
+    const std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (old == content) return false;
+  }
+  write_file_atomically(path, content);
+  return true;
+}
+
+}  // namespace t2

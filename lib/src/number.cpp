@@ -1,0 +1,24 @@
+#include "t2/number.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace t2 {
+
+Rational to_rational(double v) {
+  // mpq_set_d is exact for every finite double (a double is a dyadic rational).
+  Rational r;
+  mpq_set_d(r.get_mpq_t(), v);
+  return r;
+}
+
+std::string to_string(double v) { return fmt::format("{}", v); }
+
+std::string to_string(const Integer& v) { return v.get_str(); }
+
+void require_finite(double v, const char* what) {
+  if (!std::isfinite(v)) throw BadInput(fmt::format("coordinate {} is not a finite number ({})", what, v));
+}
+
+}  // namespace t2

@@ -1,0 +1,76 @@
+#include "t2/point.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+namespace t2 {
+
+namespace {
+
+// v = m * 2^e with m an integer of at most 53 bits.
+struct Dyadic {
+  Integer m;
+  int e = 0;
+};
+
+Dyadic decompose(double v) {
+  if (v == 0) return {Integer(0), INT_MAX};
+  int e = 0;
+  const double f = std::frexp(v, &e);  // v = f * 2^e, 0.5 <= |f| < 1
+  return {Integer(std::ldexp(f, 53)), e - 53};
+}
+
+}  // namespace
+
+ExactPoint to_exact(const Point& p) {
+  Dyadic d[3] = {decompose(p.w()), decompose(p.x()), decompose(p.y())};
+  const int emin = std::min({d[0].e, d[1].e, d[2].e});
+  Integer c[3];
+  for (int i = 0; i < 3; ++i) {
+    if (d[i].m == 0) continue;
+    mpz_mul_2exp(c[i].get_mpz_t(), d[i].m.get_mpz_t(), static_cast<unsigned long>(d[i].e - emin));
+  }
+  return ExactPoint(c[0], c[1], c[2]);
+}
+
+Point to_double(const ExactPoint& p) {
+  const Integer* c[3] = {&p.w(), &p.x(), &p.y()};
+  double f[3];
+  long e[3];
+  long emax = LONG_MIN;
+  for (int i = 0; i < 3; ++i) {
+    f[i] = mpz_get_d_2exp(&e[i], c[i]->get_mpz_t());
+    if (*c[i] != 0) emax = std::max(emax, e[i]);
+  }
+  double r[3];
+  for (int i = 0; i < 3; ++i) {
+    const long shift = e[i] - emax;  // <= 0; the largest coordinate lands in [0.5, 1)
+    r[i] = (*c[i] == 0 || shift < -2000) ? 0.0 : std::ldexp(f[i], static_cast<int>(shift));
+  }
+  return Point(r[0], r[1], r[2]);
+}
+
+Point normalized(const Point& p) {
+  if (p.w() != 0) {
+    const double a = std::fabs(p.w());
+    return Point(p.w() > 0 ? 1.0 : -1.0, p.x() / a, p.y() / a);
+  }
+  const double m = std::max(std::fabs(p.x()), std::fabs(p.y()));
+  return Point(0.0, p.x() / m, p.y() / m);
+}
+
+std::optional<std::pair<double, double>> to_cartesian(const Point& p) {
+  if (p.w() == 0) return std::nullopt;
+  return std::make_pair(p.x() / p.w(), p.y() / p.w());
+}
+
+std::string to_string(const Point& p) { return fmt::format("[{}, {}, {}]", p.w(), p.x(), p.y()); }
+
+std::string to_string(const ExactPoint& p) {
+  return fmt::format("[{}, {}, {}]", p.w().get_str(), p.x().get_str(), p.y().get_str());
+}
+
+}  // namespace t2

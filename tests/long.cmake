@@ -1,0 +1,1 @@
+t2_long_test(test_orient "Orient.*:Side.*" 1000)
