@@ -23,7 +23,11 @@ namespace {
 void write_file_atomically(const fs::path& path, std::string_view content) {
   const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
   fs::create_directories(dir);
-  std::string tmpl = (dir / ("." + path.filename().string() + ".XXXXXX")).string();
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + name + suffix.
+  std::string tmpl = dir.string();
+  tmpl += "/.";
+  tmpl += path.filename().string();
+  tmpl += ".XXXXXX";
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) fail("cannot create a temporary file beside " + path.string());
   const char* p = content.data();

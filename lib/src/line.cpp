@@ -38,7 +38,9 @@ std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<dou
 
 namespace t2 {
 
-std::string to_string(const Line& l) { return fmt::format("<{}, {}, {}>", l.W(), l.X(), l.Y()); }
+std::string to_string(const Line& l) {
+  return fmt::format("<{}, {}, {}>", to_string(l.W()), to_string(l.X()), to_string(l.Y()));
+}
 
 std::string to_string(const ExactLine& l) {
   return fmt::format("<{}, {}, {}>", l.W().get_str(), l.X().get_str(), l.Y().get_str());

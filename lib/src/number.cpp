@@ -13,7 +13,8 @@ Rational to_rational(double v) {
   return r;
 }
 
-std::string to_string(double v) { return fmt::format("{}", v); }
+// Adding +0.0 turns -0 into 0: antipode([1, 0, 1]) prints as [-1, 0, -1], not [-1, -0, -1].
+std::string to_string(double v) { return fmt::format("{}", v + 0.0); }
 
 std::string to_string(const Integer& v) { return v.get_str(); }
 

@@ -67,7 +67,9 @@ std::optional<std::pair<double, double>> to_cartesian(const Point& p) {
   return std::make_pair(p.x() / p.w(), p.y() / p.w());
 }
 
-std::string to_string(const Point& p) { return fmt::format("[{}, {}, {}]", p.w(), p.x(), p.y()); }
+std::string to_string(const Point& p) {
+  return fmt::format("[{}, {}, {}]", to_string(p.w()), to_string(p.x()), to_string(p.y()));
+}
 
 std::string to_string(const ExactPoint& p) {
   return fmt::format("[{}, {}, {}]", p.w().get_str(), p.x().get_str(), p.y().get_str());

@@ -31,7 +31,7 @@ inline Sign sign_of(const Rational& v) { return static_cast<Sign>(sgn(v)); }
 /// The exact rational value of a finite double.
 Rational to_rational(double v);
 
-/// Decimal text of a number: shortest round-trip form for doubles, all digits for integers.
+/// Decimal text of a double: the shortest form that reads back exactly; -0 prints as 0.
 std::string to_string(double v);
 /// Decimal text of an integer.
 std::string to_string(const Integer& v);
