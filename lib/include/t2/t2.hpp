@@ -13,3 +13,5 @@
 #include "t2/orient.hpp"
 #include "t2/line.hpp"
 #include "t2/io.hpp"
+#include "t2/draw.hpp"
+#include "t2/scene.hpp"

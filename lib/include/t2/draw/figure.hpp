@@ -1,0 +1,154 @@
+#pragma once
+/// @file figure.hpp
+/// @brief A figure: an ordered list of styled items that refer to geometry of T².
+///
+/// Items are stored with `double` coordinates (exact inputs are rounded to the nearest double
+/// point: a drawing has no need of more). Every geometric item is reduced to points of T²
+/// joined by *segments of T²* (shorter great-circle arcs), so that both models draw the same
+/// set: the planar model splits each arc where it crosses Ω, the spherical model where it
+/// crosses the limb.
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "t2/draw/style.hpp"
+#include "t2/line.hpp"
+#include "t2/point.hpp"
+#include "t2/t1.hpp"
+
+namespace t2::draw {
+
+/// What an item of a figure is.
+enum class ItemKind {
+  point,     ///< one point of T² (`points[0]`)
+  line,      ///< a whole oriented line (`line`)
+  segment,   ///< the segment of T² from `points[0]` to `points[1]`
+  polygon,   ///< closed chain of segments through `points` (filled with `Style::fill`)
+  polyline,  ///< open chain of segments through `points`
+  label,     ///< `text` placed next to `points[0]`
+  t1,        ///< a point of T¹ (`t1w`, `t1x`), drawn only by `T1View`
+};
+
+/// One styled item of a figure (see `Figure` for how to make them).
+struct Item {
+  ItemKind kind = ItemKind::point;  ///< what the item is
+  std::vector<Point> points;        ///< its points (meaning depends on `kind`)
+  Line line = Line(1, 0, 0);        ///< the line of an `ItemKind::line` item
+  double t1w = 1;                   ///< weight of a T¹ item
+  double t1x = 0;                   ///< coordinate of a T¹ item
+  std::string text;                 ///< text of a label item
+  Style style;                      ///< how it looks
+};
+
+namespace detail {
+/// A point with `double` coordinates from a point of any coordinate type.
+template <class T>
+Point as_double(const BasicPoint<T>& p) {
+  if constexpr (std::is_same_v<T, double>) {
+    return p;
+  } else {
+    return to_double(p);
+  }
+}
+/// A line with `double` coefficients from a line of any coefficient type.
+template <class T>
+Line as_double(const BasicLine<T>& l) {
+  if constexpr (std::is_same_v<T, double>) {
+    return l;
+  } else {
+    const Point p = to_double(ExactPoint(l.W(), l.X(), l.Y()));
+    return Line(p.w(), p.x(), p.y());
+  }
+}
+}  // namespace detail
+
+/// An ordered list of styled items. Items are drawn by layer, then in the order added.
+class Figure {
+ public:
+  /// Adds a point (front: filled marker; back: hollow marker; on Ω: on the horizon).
+  template <class T>
+  Figure& add(const BasicPoint<T>& p, Style s = {}) {
+    return push(ItemKind::point, {detail::as_double(p)}, std::move(s));
+  }
+  /// Adds a whole oriented line (both sides in the planar model, a great circle on the sphere).
+  /// With `Style::shade()` its positive side is shaded (a half-plane pair / hemisphere).
+  template <class T>
+  Figure& add(const BasicLine<T>& l, Style s = {}) {
+    Item it;
+    it.kind = ItemKind::line;
+    it.line = detail::as_double(l);
+    it.style = std::move(s);
+    items_.push_back(std::move(it));
+    return *this;
+  }
+  /// Adds a polygon: the closed chain of T² segments through the vertices, in order.
+  template <class T>
+  Figure& add(const std::vector<BasicPoint<T>>& vertices, Style s = {}) {
+    std::vector<Point> v;
+    for (const auto& p : vertices) v.push_back(detail::as_double(p));
+    return push(ItemKind::polygon, std::move(v), std::move(s));
+  }
+  /// Adds a point of T¹ (drawn only by `T1View`: on the circle model or on the two lines).
+  template <class T>
+  Figure& add(const BasicT1<T>& a, Style s = {}) {
+    Item it;
+    it.kind = ItemKind::t1;
+    if constexpr (std::is_same_v<T, double>) {
+      it.t1w = a.w();
+      it.t1x = a.x();
+    } else {
+      const Point p = to_double(ExactPoint(a.w(), a.x(), 0));
+      it.t1w = p.w();
+      it.t1x = p.x();
+    }
+    it.style = std::move(s);
+    items_.push_back(std::move(it));
+    return *this;
+  }
+  /// Adds the segment of T² from p to q: the shorter great-circle arc. Throws `t2::Undefined`
+  /// when q = ¬p (the segment of two antipodes is undefined) or when p = q.
+  template <class T>
+  Figure& segment(const BasicPoint<T>& p, const BasicPoint<T>& q, Style s = {}) {
+    return push(ItemKind::segment, {detail::as_double(p), detail::as_double(q)}, std::move(s));
+  }
+  /// Adds the arrow p → q: the segment with an arrowhead at q.
+  template <class T>
+  Figure& arrow(const BasicPoint<T>& p, const BasicPoint<T>& q, Style s = {}) {
+    return segment(p, q, std::move(s.arrow(true)));
+  }
+  /// Adds an open chain of T² segments (a sampled curve, a path). Consecutive points must not
+  /// be antipodes.
+  template <class T>
+  Figure& polyline(const std::vector<BasicPoint<T>>& pts, Style s = {}) {
+    std::vector<Point> v;
+    for (const auto& p : pts) v.push_back(detail::as_double(p));
+    return push(ItemKind::polyline, std::move(v), std::move(s));
+  }
+  /// Adds `text` next to point p (offset in the direction `Style::label_angle()`).
+  template <class T>
+  Figure& label(const BasicPoint<T>& p, std::string text, Style s = {}) {
+    Item it;
+    it.kind = ItemKind::label;
+    it.points = {detail::as_double(p)};
+    it.text = std::move(text);
+    it.style = std::move(s);
+    items_.push_back(std::move(it));
+    return *this;
+  }
+
+  /// A title drawn above the picture (empty: none).
+  Figure& title(std::string t) { title_ = std::move(t); return *this; }
+  /// The title.
+  const std::string& title() const { return title_; }
+
+  /// The items, in the order added.
+  const std::vector<Item>& items() const { return items_; }
+
+ private:
+  Figure& push(ItemKind k, std::vector<Point> pts, Style s);
+  std::vector<Item> items_;
+  std::string title_;
+};
+
+}  // namespace t2::draw
