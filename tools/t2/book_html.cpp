@@ -1,0 +1,267 @@
+// `t2 book build`: runs pandoc once per page with book/template.html and book/book.lua.
+#include "book_html.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "book_core.hpp"
+#include "t2/io.hpp"
+
+namespace t2cli::book {
+
+namespace {
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+std::string xml_unescape(std::string s) {
+  const std::pair<const char*, const char*> rep[] = {{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
+  for (const auto& [from, to] : rep) {
+    std::string::size_type p = 0;
+    while ((p = s.find(from, p)) != std::string::npos) {
+      s.replace(p, std::strlen(from), to);
+      p += std::strlen(to);
+    }
+  }
+  return s;
+}
+
+struct Part {
+  std::string numeral, title;
+  int first = 0, last = 0;
+};
+
+std::vector<Part> read_parts(const fs::path& file) {
+  std::vector<Part> parts;
+  if (!fs::exists(file)) return parts;
+  static const std::regex re(R"(^\s*([IVXL]+)\s+([0-9]+)\s+([0-9]+)\s+(.+?)\s*$)");
+  for (const auto& l : split_lines(read_text(file))) {
+    std::smatch m;
+    if (l.empty() || l[0] == '#' || !std::regex_match(l, m, re)) continue;
+    parts.push_back({m[1], m[4], std::stoi(m[2]), std::stoi(m[3])});
+  }
+  return parts;
+}
+
+// a/b relative to base, with forward slashes ("../../docs/html").
+std::string rel(const fs::path& target, const fs::path& base) {
+  std::error_code ec;
+  const fs::path r = fs::relative(fs::weakly_canonical(target, ec), fs::weakly_canonical(base, ec), ec);
+  if (ec || r.empty()) return fs::absolute(target).generic_string();
+  return r.generic_string();
+}
+
+void copy_tree(const fs::path& from, const fs::path& to) {
+  if (!fs::is_directory(from)) return;
+  for (const auto& e : fs::recursive_directory_iterator(from)) {
+    const fs::path dst = to / fs::relative(e.path(), from);
+    if (e.is_directory()) {
+      fs::create_directories(dst);
+    } else if (e.is_regular_file()) {
+      fs::create_directories(dst.parent_path());
+      fs::copy_file(e.path(), dst, fs::copy_options::overwrite_existing);
+    }
+  }
+}
+
+struct Page {
+  std::string file;   // "01-t2-plane.html"
+  std::string title;  // "The oriented projective plane"
+  std::string label;  // "Chapter 01"
+};
+
+}  // namespace
+
+std::map<std::string, std::string> read_tag_file(const fs::path& tag) {
+  std::map<std::string, std::string> out;
+  if (!fs::exists(tag)) return out;
+  // A small state machine over the tag file's lines: compounds hold names, members.
+  static const std::regex compound_re(R"re(<compound kind="([a-z]+)">)re");
+  static const std::regex field_re(R"(^\s*<(name|filename|anchorfile|anchor)>(.*)</\1>\s*$)");
+  std::string kind, cname, cfile;
+  bool in_member = false;
+  std::string mname, mfile, manchor;
+  for (const auto& l : split_lines(read_text(tag))) {
+    std::smatch m;
+    if (std::regex_search(l, m, compound_re)) {
+      kind = m[1];
+      cname.clear();
+      cfile.clear();
+      continue;
+    }
+    if (l.find("<member ") != std::string::npos) {
+      in_member = true;
+      mname.clear();
+      mfile.clear();
+      manchor.clear();
+      continue;
+    }
+    if (l.find("</member>") != std::string::npos) {
+      in_member = false;
+      if (mname.empty() || mfile.empty()) continue;
+      std::string full;
+      if (kind == "file" || kind == "namespace")
+        full = "t2::" + mname;
+      else if (kind == "class" || kind == "struct")
+        full = cname + "::" + mname;
+      else
+        continue;
+      out.emplace(full, mfile + (manchor.empty() ? "" : "#" + manchor));
+      continue;
+    }
+    if (l.find("</compound>") != std::string::npos) {
+      if ((kind == "class" || kind == "struct") && !cname.empty() && !cfile.empty()) out[cname] = cfile;
+      kind.clear();
+      continue;
+    }
+    if (std::regex_match(l, m, field_re)) {
+      const std::string f = m[1], v = xml_unescape(m[2]);
+      if (in_member) {
+        if (f == "name") mname = v;
+        if (f == "anchorfile") mfile = v;
+        if (f == "anchor") manchor = v;
+      } else {
+        if (f == "name" && cname.empty()) cname = v;
+        if (f == "filename") cfile = v;
+      }
+    }
+  }
+  return out;
+}
+
+int build_book(const BuildOptions& o) {
+  const fs::path bookdir = o.root / "book";
+  for (const char* f : {"template.html", "book.lua", "style.css"})
+    if (!fs::exists(bookdir / f)) throw std::runtime_error("missing " + (bookdir / f).string());
+  fs::create_directories(o.out);
+
+  // The API map for the Lua filter: name, tab, href relative to the output directory.
+  const auto api = read_tag_file(o.docs / "t2.tag");
+  if (api.empty() && !o.quiet)
+    fmt::print(stderr, "t2 book: no API tag file at {} (build the `docs` target): names stay unlinked\n",
+               (o.docs / "t2.tag").string());
+  const std::string html_rel = rel(o.docs / "html", o.out);
+  std::string tsv;
+  for (const auto& [name, href] : api) tsv += name + "\t" + html_rel + "/" + href + "\n";
+  const fs::path work = o.out / ".book-build";
+  fs::create_directories(work);
+  t2::update_file_atomically(work / "api.tsv", tsv);
+
+  copy_tree(o.root / "figures", o.out / "figures");
+  fs::copy_file(bookdir / "style.css", o.out / "style.css", fs::copy_options::overwrite_existing);
+
+  const std::string reporel = rel(o.root, o.out);
+  auto pandoc = [&](const fs::path& input, const fs::path& output, const std::string& srcdir,
+                    const std::string& pagetitle, const std::vector<std::pair<std::string, std::string>>& vars,
+                    bool toc) {
+    std::vector<std::string> argv = {"pandoc", input.string(), "--from=markdown+tex_math_dollars-implicit_header_references",
+                                     "--to=html5", "--standalone", "--mathml",
+                                     "--template=" + (bookdir / "template.html").string(),
+                                     "--lua-filter=" + (bookdir / "book.lua").string(),
+                                     "--highlight-style=tango",
+                                     "--metadata=pagetitle:" + pagetitle,
+                                     "--metadata=reporel:" + reporel,
+                                     "--metadata=apimap:" + (work / "api.tsv").string(),
+                                     "--output=" + output.string()};
+    if (!srcdir.empty()) argv.push_back("--metadata=srcdir:" + srcdir);
+    if (toc) argv.insert(argv.end(), {"--toc", "--toc-depth=2"});
+    for (const auto& [k, v] : vars) argv.push_back("--variable=" + k + ":" + v);
+    const int rc = run_program(argv);
+    if (rc != 0)
+      throw std::runtime_error(rc < 0 ? "cannot run pandoc (install the Debian package pandoc)"
+                                      : "pandoc failed on " + input.string());
+    if (!o.quiet) fmt::print("  {}\n", output.string());
+  };
+
+  std::vector<Chapter> chapters;
+  for (const auto& c : find_chapters(o.root))
+    if (c.has_text) chapters.push_back(c);
+
+  int pages = 0;
+  for (std::size_t i = 0; i < chapters.size(); ++i) {
+    const Chapter& c = chapters[i];
+    const std::string title = c.title.empty() ? c.slug : c.title;
+    std::vector<std::pair<std::string, std::string>> vars = {{"chapter_number", c.number}};
+    if (i > 0) {
+      vars.push_back({"prev", chapters[i - 1].folder() + ".html"});
+      vars.push_back({"prev_title", html_escape(chapters[i - 1].number + " " + chapters[i - 1].title)});
+    }
+    if (i + 1 < chapters.size()) {
+      vars.push_back({"next", chapters[i + 1].folder() + ".html"});
+      vars.push_back({"next_title", html_escape(chapters[i + 1].number + " " + chapters[i + 1].title)});
+    }
+    const fs::path ex = o.root / "exercises" / c.folder() / "README.md";
+    if (fs::exists(ex)) {
+      vars.push_back({"exercises", "exercises-" + c.folder() + ".html"});
+      pandoc(ex, o.out / ("exercises-" + c.folder() + ".html"), "exercises/" + c.folder(),
+             "Exercises of chapter " + c.number + " — t2",
+             {{"chapter_number", c.number}, {"up", c.folder() + ".html"}, {"up_title", html_escape(c.number + " " + title)}},
+             false);
+      ++pages;
+    }
+    pandoc(c.dir / "chapter.md", o.out / (c.folder() + ".html"), "chapters/" + c.folder(),
+           c.number + " " + title + " — t2", vars, true);
+    ++pages;
+  }
+
+  // The contents page, by part.
+  std::ostringstream md;
+  md << "# t2 — computational geometry in the oriented projective plane T²\n\n"
+     << "A literate course: each chapter explains one topic of the oriented projective plane T² "
+        "and comes with a small program (run it with `t2 run NN`) that prints the numbers the "
+        "text discusses and draws the figures, in the planar and in the spherical model. "
+        "Each chapter ends with graded exercises.\n\n";
+  const auto parts = read_parts(bookdir / "parts.txt");
+  std::vector<bool> listed(chapters.size(), false);
+  auto item = [&](std::size_t i) {
+    const Chapter& c = chapters[i];
+    listed[i] = true;
+    md << "- " << c.number << " · [" << (c.title.empty() ? c.slug : c.title) << "](" << c.folder() << ".html)";
+    if (fs::exists(o.root / "exercises" / c.folder() / "README.md"))
+      md << " · [exercises](exercises-" << c.folder() << ".html)";
+    md << "\n";
+  };
+  for (const auto& p : parts) {
+    std::vector<std::size_t> in;
+    for (std::size_t i = 0; i < chapters.size(); ++i) {
+      const int n = std::stoi(chapters[i].number);
+      if (n >= p.first && n <= p.last) in.push_back(i);
+    }
+    if (in.empty()) continue;
+    md << "## Part " << p.numeral << " — " << p.title << "\n\n";
+    for (auto i : in) item(i);
+    md << "\n";
+  }
+  bool other = false;
+  for (std::size_t i = 0; i < chapters.size(); ++i)
+    if (!listed[i]) {
+      if (!other) md << "## Other chapters\n\n";
+      other = true;
+      item(i);
+    }
+  if (!api.empty()) md << "\nThe [API reference](" << html_rel << "/index.html) documents every name of the library.\n";
+  t2::update_file_atomically(work / "index.md", md.str());
+  pandoc(work / "index.md", o.out / "index.html", "", "t2 — the book", {{"contents", "1"}}, false);
+  ++pages;
+  return pages;
+}
+
+}  // namespace t2cli::book

@@ -1,0 +1,122 @@
+// t2 book: build the HTML book; check and sync the listings cut from source files.
+#include <fmt/format.h>
+
+#include <string>
+
+#include "book_core.hpp"
+#include "book_html.hpp"
+#include "command.hpp"
+
+namespace t2cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BookArgs {
+  std::string action = "build";
+  fs::path root = book::default_root();
+  fs::path out, docs;
+  bool quiet = false;
+};
+
+BookArgs parse(Args args) {
+  BookArgs a;
+  std::size_t i = 0;
+  if (i < args.size() && !args[i].empty() && args[i][0] != '-') a.action = args[i++];
+  if (a.action != "build" && a.action != "check" && a.action != "sync")
+    throw UsageError("unknown action '" + a.action + "' (build, check or sync)");
+  for (; i < args.size(); ++i) {
+    const std::string& s = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError(s + " needs a value");
+      return args[++i];
+    };
+    if (s == "--out" || s == "-o") {
+      a.out = value();
+    } else if (s == "--root") {
+      a.root = value();
+    } else if (s == "--docs") {
+      a.docs = value();
+    } else if (s == "--quiet" || s == "-q") {
+      a.quiet = true;
+    } else {
+      throw UsageError("unexpected argument '" + s + "'");
+    }
+  }
+  if (a.action != "build" && (!a.out.empty() || !a.docs.empty()))
+    throw UsageError("--out and --docs are options of `t2 book build`");
+  if (!fs::is_directory(a.root / "chapters")) throw UsageError("no chapters/ folder in " + a.root.string());
+  return a;
+}
+
+void print_problems(const std::vector<book::Problem>& ps) {
+  for (const auto& p : ps) fmt::print(stderr, "{}: {}\n", p.where, p.message);
+}
+
+int run(Args args) {
+  const BookArgs a = parse(args);
+  if (a.action == "check") {
+    int listings = 0;
+    const auto ps = book::check_book(a.root, &listings);
+    const auto files = book::chapter_markdown_files(a.root);
+    if (!ps.empty()) {
+      print_problems(ps);
+      fmt::print(stderr, "t2 book check: {} problem(s) in {} chapter(s); `t2 book sync` rewrites listings from their source\n",
+                 ps.size(), files.size());
+      return kFailed;
+    }
+    if (!a.quiet) fmt::print("t2 book check: {} chapter(s), {} listing(s), all in sync, every figure and link exists\n",
+                             files.size(), listings);
+    return kOk;
+  }
+  if (a.action == "sync") {
+    std::vector<book::Problem> ps;
+    const auto changed = book::sync_book(a.root, ps);
+    for (const auto& f : changed) fmt::print("rewrote listings of {}\n", f);
+    if (!ps.empty()) {
+      print_problems(ps);
+      return kFailed;
+    }
+    if (changed.empty() && !a.quiet) fmt::print("t2 book sync: every listing was already in sync\n");
+    return kOk;
+  }
+  book::BuildOptions o;
+  o.root = a.root;
+  const fs::path build = book::own_build_dir();
+  o.out = a.out.empty() ? build / "book" : a.out;
+  if (!a.docs.empty()) {
+    o.docs = a.docs;
+  } else if (fs::exists(build / "docs" / "t2.tag")) {
+    o.docs = build / "docs";
+  } else {
+    o.docs = a.root / "build" / "default" / "docs";
+  }
+  o.quiet = a.quiet;
+  const int pages = book::build_book(o);
+  fmt::print("t2 book: {} page(s); open {}\n", pages, (o.out / "index.html").string());
+  return kOk;
+}
+
+}  // namespace
+
+T2_COMMAND({"book", "build the HTML book; check or sync its listings",
+            "Usage: t2 book [build] [--out DIR] [--docs DIR] [--root DIR] [--quiet]\n"
+            "       t2 book check [--root DIR]\n"
+            "       t2 book sync  [--root DIR]\n"
+            "\n"
+            "build  Makes the HTML book with pandoc: a contents page by part, one page per chapter\n"
+            "       (chapters/NN-slug/chapter.md) with previous/next links, and one per exercise\n"
+            "       sheet. Math is MathML, figures are copied, library names in inline code link to\n"
+            "       the Doxygen reference (DIR/t2.tag and DIR/html; default: the docs/ folder of\n"
+            "       this build). Default output: <build>/book/index.html. Needs no server.\n"
+            "check  Fails (exit 1) when a listing differs from the source region it is cut from,\n"
+            "       when a marker //> NAME ... //< NAME is missing, or when a figure or link target\n"
+            "       does not exist. Prints chapter:line, listing and the first differing line.\n"
+            "sync   Rewrites every listing of every chapter from its source region.\n"
+            "\n"
+            "A listing in chapter.md is the comment <!-- listing: PATH#NAME --> (PATH relative to\n"
+            "the repository root) followed by a fenced code block; see chapters/README.md.\n"
+            "--root DIR works on another checkout (default: the one t2 was built from).\n",
+            run});
+
+}  // namespace t2cli

@@ -1,0 +1,59 @@
+// t2 run NN: build the program of a chapter if needed, then run it.
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "book_core.hpp"
+#include "command.hpp"
+
+namespace t2cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(Args args) {
+  if (args.empty()) throw UsageError("which chapter? (t2 list shows them)");
+  std::size_t i = 0;
+  bool no_build = false;
+  if (args[i] == "--no-build") {
+    no_build = true;
+    ++i;
+  }
+  if (i >= args.size()) throw UsageError("which chapter? (t2 list shows them)");
+  const auto c = book::find_chapter(book::default_root(), args[i]);
+  if (!c) throw UsageError("no chapter '" + args[i] + "' (t2 list shows them)");
+  if (!c->has_program) throw UsageError("chapter " + c->folder() + " has no program (main.cpp) yet");
+  const fs::path build = book::own_build_dir();
+  const std::string target = "chapter_" + c->number;
+  if (!no_build) {
+    // cmake's progress goes to stderr, so that stdout holds only the program's output.
+    const int rc = book::run_program({"cmake", "--build", build.string(), "--target", target}, true);
+    if (rc != 0) {
+      fmt::print(stderr, "t2 run: building {} in {} failed\n", target, build.string());
+      return kFailed;
+    }
+  }
+  const fs::path exe = build / "bin" / target;
+  if (!fs::exists(exe)) {
+    fmt::print(stderr, "t2 run: {} does not exist (build the target {})\n", exe.string(), target);
+    return kFailed;
+  }
+  std::vector<std::string> argv = {exe.string()};
+  argv.insert(argv.end(), args.begin() + static_cast<std::ptrdiff_t>(i) + 1, args.end());
+  const int rc = book::run_program(argv);
+  return rc < 0 ? kFailed : rc;
+}
+
+}  // namespace
+
+T2_COMMAND({"run", "build and run the program of a chapter",
+            "Usage: t2 run [--no-build] NN [ARGS...]\n"
+            "\n"
+            "Builds the chapter's program (cmake --build <build dir> --target chapter_NN, in the\n"
+            "build directory this t2 belongs to; its messages go to stderr) and runs it with ARGS,\n"
+            "e.g. `t2 run 01 --figures /tmp/fig`. NN may be 1, 01, the slug or NN-slug. The exit\n"
+            "status is the program's. --no-build runs the program as it is.\n",
+            run});
+
+}  // namespace t2cli
