@@ -8,26 +8,12 @@
 
 namespace t2 {
 
-namespace {
-
-// v = m * 2^e with m an integer of at most 53 bits.
-struct Dyadic {
-  Integer m;
-  int e = 0;
-};
-
-Dyadic decompose(double v) {
-  if (v == 0) return {Integer(0), INT_MAX};
-  int e = 0;
-  const double f = std::frexp(v, &e);  // v = f * 2^e, 0.5 <= |f| < 1
-  return {Integer(std::ldexp(f, 53)), e - 53};
-}
-
-}  // namespace
-
 ExactPoint to_exact(const Point& p) {
-  Dyadic d[3] = {decompose(p.w()), decompose(p.x()), decompose(p.y())};
-  const int emin = std::min({d[0].e, d[1].e, d[2].e});
+  // Each coordinate is m·2^e exactly; multiply all three by 2^-emin (a positive factor).
+  const Dyadic d[3] = {Dyadic(p.w()), Dyadic(p.x()), Dyadic(p.y())};
+  long emin = LONG_MAX;
+  for (const auto& c : d)
+    if (c.m != 0) emin = std::min(emin, c.e);
   Integer c[3];
   for (int i = 0; i < 3; ++i) {
     if (d[i].m == 0) continue;

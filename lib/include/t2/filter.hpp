@@ -5,19 +5,28 @@
 ///
 /// A predicate is written once as a generic lambda over a number type `N` using only `+`, `-`
 /// and `*`. `filtered_sign(f, a, b, ...)` first evaluates `f` on `Filtered` numbers, which carry
-/// the rounded value `v`, a magnitude `mag` (the same polynomial evaluated on absolute values,
-/// i.e. the sum of the absolute values of all its monomials) and the depth `k` of the longest
-/// chain of rounded operations. By the standard analysis (Higham, *Accuracy and Stability of
+/// the rounded value `v`, a magnitude `mag` (the same expression evaluated on absolute values
+/// with every `-` read as `+`), the depth `k` of the longest chain of rounded operations and
+/// the degree of the polynomial. By the standard analysis (Higham, *Accuracy and Stability of
 /// Numerical Algorithms*, §3.1) the exact value differs from `v` by at most
-/// γ_k · mag_exact, γ_k = k·u/(1 - k·u), u = 2⁻⁵³, as long as nothing overflows or
-/// underflows. `mag` is itself rounded, so the bound used is (k + 2)·u·mag (valid for k ≤ 64).
-/// Overflow is caught by testing that `v` and `mag` are finite; underflow by refusing every
-/// product whose magnitude falls below 2⁻⁹⁶⁰. If the test `|v| > bound` fails, `f` is evaluated
-/// again on GMP rationals, into which every double converts exactly: the sign is then exact.
+/// γ_k · mag, γ_k = k·u/(1 - k·u), u = 2⁻⁵³, as long as nothing overflows or underflows.
+/// `mag` is itself rounded, and one more u·mag covers underflow (below), so the bound used is
+/// (k + 3)·u·mag (valid for k ≤ 64).
+///
+/// Overflow and underflow are tamed up front: the filter is trusted only when every nonzero
+/// input lies in [2⁻¹²⁰, 2¹²⁰] and the degree is at most 8. Then every `mag` of a node is 0 or
+/// in [2⁻⁹⁶⁰, 2⁹⁶⁰]: nothing overflows, and a product that underflows (a tiny value left by
+/// cancellation) errs by at most 2⁻¹⁰⁷⁵ ≤ 2⁻¹¹⁵·mag of its node, which is far below u·mag for any
+/// predicate of fewer than 2⁶⁰ operations. Other inputs go to GMP.
+///
+/// When the bound cannot decide, one more certificate is tried before GMP: if every input is
+/// an integer and `mag` < 2⁵², no operation rounded at all, so `v` is exact — even when it is
+/// zero. Integer grids and their exactly collinear triples never reach GMP. Otherwise `f` is
+/// evaluated again exactly, on `Dyadic` numbers (a GMP integer times a power of two), into
+/// which every double converts exactly; unlike GMP rationals they never compute a gcd.
 ///
 /// There are no epsilons: the bound only decides *whether* the fast answer is certain.
 
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -31,54 +40,65 @@ namespace t2 {
 /// A double with the bookkeeping of the filter (see the file comment).
 struct Filtered {
   double v = 0;    ///< rounded value
-  double mag = 0;  ///< rounded magnitude: the polynomial on absolute values
+  double mag = 0;  ///< rounded magnitude: the expression on absolute values
   int depth = 0;   ///< longest chain of rounded operations
-  bool tiny = false;  ///< a product may have underflowed: the bound does not hold
+  int degree = 0;  ///< degree of the polynomial in the inputs
 
   Filtered() = default;
   /// An exact leaf (an input coordinate).
-  Filtered(double x) : v(x), mag(std::fabs(x)) {}  // NOLINT: implicit on purpose
+  Filtered(double x) : v(x), mag(std::fabs(x)), degree(1) {}  // NOLINT: implicit on purpose
 
   /// Sum: one more rounding.
   friend Filtered operator+(const Filtered& a, const Filtered& b) {
-    return {a.v + b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, a.tiny || b.tiny};
+    return {a.v + b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, std::max(a.degree, b.degree)};
   }
   /// Difference: one more rounding.
   friend Filtered operator-(const Filtered& a, const Filtered& b) {
-    return {a.v - b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, a.tiny || b.tiny};
+    return {a.v - b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, std::max(a.degree, b.degree)};
   }
   /// Negation: exact.
-  friend Filtered operator-(const Filtered& a) { return {-a.v, a.mag, a.depth, a.tiny}; }
-  /// Product: the roundings of both factors plus one; flags possible underflow.
+  friend Filtered operator-(const Filtered& a) { return {-a.v, a.mag, a.depth, a.degree}; }
+  /// Product: the roundings of both factors plus one.
   friend Filtered operator*(const Filtered& a, const Filtered& b) {
-    const double m = a.mag * b.mag;
-    const bool t = a.tiny || b.tiny || (a.mag != 0 && b.mag != 0 && m < 0x1p-960);
-    return {a.v * b.v, m, a.depth + b.depth + 1, t};
+    return {a.v * b.v, a.mag * b.mag, a.depth + b.depth + 1, a.degree + b.degree};
   }
 
  private:
-  Filtered(double v_, double m_, int d_, bool t_) : v(v_), mag(m_), depth(d_), tiny(t_) {}
+  Filtered(double v_, double m_, int k_, int d_) : v(v_), mag(m_), depth(k_), degree(d_) {}
 };
 
 /// How often the exact stage ran: counters for the benchmarks and the course's measurements.
 struct FilterStats {
-  std::atomic<std::uint64_t> calls{0};  ///< predicates evaluated on doubles
-  std::atomic<std::uint64_t> exact{0};  ///< of which the filter failed and GMP decided
+  std::uint64_t calls = 0;  ///< predicates evaluated on doubles
+  std::uint64_t exact = 0;  ///< of which the filter could not decide and GMP did
   /// Sets both counters to zero.
-  void reset() {
-    calls = 0;
-    exact = 0;
-  }
+  void reset() { calls = exact = 0; }
 };
 
-/// The process-wide counters of `filtered_sign`.
-FilterStats& filter_stats();
+/// The counters of `filtered_sign` in the calling thread (per thread, so counting costs no
+/// atomic operation).
+inline FilterStats& filter_stats() {
+  thread_local FilterStats stats;
+  return stats;
+}
 
-/// The sign certified by the filter, or `std::nullopt`-like `2` when it is uncertain.
-inline int certified_sign(const Filtered& r) {
-  if (r.tiny || !std::isfinite(r.v) || !std::isfinite(r.mag) || r.depth > 64) return 2;
-  const double u = 0x1p-53;
-  const double bound = (r.depth + 2) * u * r.mag;
+namespace detail {
+/// True when x is 0 or 2⁻¹²⁰ ≤ |x| ≤ 2¹²⁰ (see the file comment).
+inline bool in_filter_range(double x) {
+  const double a = std::fabs(x);
+  return (a == 0) | ((a >= 0x1p-120) & (a <= 0x1p120));
+}
+/// True when x is an integer of magnitude below 2⁵².
+inline bool small_integer(double x) {
+  return std::fabs(x) < 0x1p52 && x == double(static_cast<std::int64_t>(x));
+}
+}  // namespace detail
+
+/// The sign (-1, 0, +1) that the filter certifies for `r`, or 2 when it cannot decide.
+/// `in_range` says whether every input passed detail::in_filter_range.
+inline int certified_sign(const Filtered& r, bool in_range) {
+  if (!in_range || r.degree > 8 || r.depth > 64) return 2;
+  const double bound = (r.depth + 3) * 0x1p-53 * r.mag;
   if (r.v > bound) return 1;
   if (-r.v > bound) return -1;
   if (r.mag == 0) return 0;  // every monomial is exactly zero
@@ -102,15 +122,43 @@ struct Exact {
   friend Exact operator*(const Exact& a, const Exact& b) { return G(a.v * b.v); }
 };
 
+/// An exact dyadic rational m·2^e: every finite double is one, and sums and products of them
+/// are too. The exact stage of the filter computes with these.
+struct Dyadic {
+  Integer m;   ///< mantissa
+  long e = 0;  ///< binary exponent
+
+  /// The exact value of a finite double.
+  explicit Dyadic(double x);
+  /// m·2^e.
+  Dyadic(Integer m_, long e_) : m(std::move(m_)), e(e_) {}
+  /// Sum (aligns the exponents by shifting the mantissa with the larger one).
+  friend Dyadic operator+(const Dyadic& a, const Dyadic& b) { return add(a, b, false); }
+  /// Difference.
+  friend Dyadic operator-(const Dyadic& a, const Dyadic& b) { return add(a, b, true); }
+  /// Negation.
+  friend Dyadic operator-(const Dyadic& a) { return Dyadic(Integer(-a.m), a.e); }
+  /// Product.
+  friend Dyadic operator*(const Dyadic& a, const Dyadic& b) { return Dyadic(Integer(a.m * b.m), a.e + b.e); }
+
+ private:
+  static Dyadic add(const Dyadic& a, const Dyadic& b, bool negate_b);
+};
+
+/// The sign of a dyadic number.
+inline Sign sign_of(const Dyadic& d) { return static_cast<Sign>(sgn(d.m)); }
+
 /// The exact sign of `f(args...)` for finite doubles (see the file comment).
 template <class F, class... D>
 Sign filtered_sign(F&& f, D... args) {
   auto& stats = filter_stats();
-  stats.calls.fetch_add(1, std::memory_order_relaxed);
-  const int s = certified_sign(f(Filtered(args)...));
+  ++stats.calls;
+  const Filtered r = f(Filtered(args)...);
+  const int s = certified_sign(r, (detail::in_filter_range(args) & ...));
   if (s != 2) return static_cast<Sign>(s);
-  stats.exact.fetch_add(1, std::memory_order_relaxed);
-  return sign_of(f(Exact<Rational>(to_rational(args))...).v);
+  if ((detail::small_integer(args) && ...) && r.mag < 0x1p52) return sign_of(r.v);  // no rounding
+  ++stats.exact;
+  return sign_of(f(Dyadic(args)...));
 }
 
 /// The sign of `f(args...)` evaluated directly in exact arithmetic (integer coordinates).
