@@ -1,0 +1,94 @@
+#pragma once
+/// @file scene.hpp
+/// @brief Scene files: points, segments, polygons and labels of T² as plain text.
+///
+/// The format (README, section "Scene files") in short:
+///
+///     # a comment runs to the end of the line; blank lines are ignored
+///     1 2                # the front point [1, 1, 2]: two numbers are x y
+///     -1 0 3             # three numbers are homogeneous w x y: a back point
+///     label A 0 0        # a named point of the scene
+///     segment            # a block of exactly two points, or names of labelled points
+///       A
+///       0 5
+///     end
+///     polygon            # a block of three or more vertices, in order
+///       0 0
+///       1 0
+///       0 1
+///     end
+///
+/// A file of plain points is a valid scene. Errors throw `ParseError`, whose message reads
+/// `file:line: what is wrong`.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "t2/error.hpp"
+#include "t2/point.hpp"
+
+namespace t2 {
+
+/// A scene file could not be read as a scene: `what()` is `file:line: message`.
+class ParseError : public BadInput {
+ public:
+  /// @param file the name of the file (as given to the parser)
+  /// @param line the 1-based line of the error
+  /// @param message what is wrong, without the `file:line:` prefix
+  ParseError(std::string file, int line, const std::string& message);
+  /// The name of the file.
+  const std::string& file() const { return file_; }
+  /// The 1-based line number of the error.
+  int line() const { return line_; }
+  /// The message without the `file:line: ` prefix.
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string message_;
+};
+
+/// A point of a scene, where it was written, and its name (empty when it has none).
+struct ScenePoint {
+  Point point;        ///< the point of T²
+  int line = 0;       ///< the 1-based line of the file that gave it
+  std::string label;  ///< its name from a `label` line, or empty
+};
+
+/// A `segment ... end` block: two endpoints that are not antipodes.
+struct SceneSegment {
+  ScenePoint a;   ///< the first endpoint
+  ScenePoint b;   ///< the second endpoint
+  int line = 0;   ///< the line of the `segment` keyword
+};
+
+/// A `polygon ... end` block: three or more vertices in order; no two consecutive ones
+/// (cyclically) are antipodes, so every edge is a defined segment of T².
+struct ScenePolygon {
+  std::vector<ScenePoint> vertices;  ///< the vertices, in the order of the file
+  int line = 0;                      ///< the line of the `polygon` keyword
+};
+
+/// Everything a scene file holds.
+struct Scene {
+  std::string name;                    ///< the file name used in messages
+  std::vector<ScenePoint> points;      ///< the points outside blocks (labelled ones included)
+  std::vector<SceneSegment> segments;  ///< the `segment` blocks, in order
+  std::vector<ScenePolygon> polygons;  ///< the `polygon` blocks, in order
+
+  /// The labelled point named `label`, or nullptr.
+  const ScenePoint* find(std::string_view label) const;
+};
+
+/// Parses the text of a scene file; `name` is used in error messages (`name:line: ...`).
+/// Throws `ParseError` on the first error.
+Scene parse_scene(std::string_view text, std::string name);
+
+/// Reads and parses a scene file. Throws `BadInput` when the file cannot be read and
+/// `ParseError` when it is not a valid scene.
+Scene read_scene(const std::filesystem::path& path);
+
+}  // namespace t2

@@ -1,0 +1,254 @@
+#include "t2/scene.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <system_error>
+#include <utility>
+
+namespace t2 {
+
+ParseError::ParseError(std::string file, int line, const std::string& message)
+    : BadInput(fmt::format("{}:{}: {}", file, line, message)),
+      file_(std::move(file)),
+      line_(line),
+      message_(message) {}
+
+const ScenePoint* Scene::find(std::string_view label) const {
+  for (const auto& p : points)
+    if (!p.label.empty() && p.label == label) return &p;
+  return nullptr;
+}
+
+namespace {
+
+constexpr std::string_view kKeywords[] = {"label", "segment", "polygon", "end"};
+
+bool is_keyword(std::string_view w) {
+  for (auto k : kKeywords)
+    if (w == k) return true;
+  return false;
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// A token for a message: quoted, at most 32 bytes, unprintable bytes as \xNN.
+std::string quote(std::string_view t) {
+  std::string s = "'";
+  const std::size_t n = std::min<std::size_t>(t.size(), 32);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(t[i]);
+    if (c < 0x20 || c >= 0x7f || c == '\\')
+      s += fmt::format("\\x{:02x}", c);
+    else
+      s += static_cast<char>(c);
+  }
+  if (t.size() > n) s += "...";
+  return s + "'";
+}
+
+// A label: a letter or '_', then letters, digits, '_' and "'" (so p' and q'' are names).
+bool is_name(std::string_view w) {
+  if (w.empty() || !is_letter(w[0])) return false;
+  for (char c : w)
+    if (!is_letter(c) && !is_digit(c) && c != '\'') return false;
+  return true;
+}
+
+// Words that from_chars would read as a non-finite value: "inf", "-nan", "Infinity" ...
+bool looks_non_finite(std::string_view w) {
+  if (!w.empty() && (w[0] == '+' || w[0] == '-')) w.remove_prefix(1);
+  std::string low;
+  for (char c : w.substr(0, 8)) low += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return low.starts_with("inf") || low.starts_with("nan");
+}
+
+// Splits a line (comment already removed) into words.
+std::vector<std::string_view> split(std::string_view s) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && is_space(s[i])) ++i;
+    const std::size_t b = i;
+    while (i < s.size() && !is_space(s[i])) ++i;
+    if (i > b) words.push_back(s.substr(b, i - b));
+  }
+  return words;
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, std::string name) : text_(text) { scene_.name = std::move(name); }
+
+  Scene run() {
+    if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte order mark
+    std::size_t pos = 0;
+    while (pos < text_.size()) {
+      if (line_ == INT_MAX) fail("the file has too many lines");
+      ++line_;
+      std::size_t nl = text_.find('\n', pos);
+      if (nl == std::string_view::npos) nl = text_.size();
+      std::string_view s = text_.substr(pos, nl - pos);
+      pos = nl + 1;
+      if (const auto hash = s.find('#'); hash != std::string_view::npos) s = s.substr(0, hash);
+      const auto words = split(s);
+      if (!words.empty()) handle(words);
+    }
+    if (block_)
+      throw ParseError(scene_.name, block_->line,
+                       fmt::format("'{}' block is not closed: 'end' is missing", kind()));
+    return std::move(scene_);
+  }
+
+ private:
+  struct Block {
+    bool polygon = false;
+    int line = 0;
+    std::vector<ScenePoint> points;
+  };
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw ParseError(scene_.name, line_, message);
+  }
+  const char* kind() const { return block_ && block_->polygon ? "polygon" : "segment"; }
+
+  void no_more(const std::vector<std::string_view>& w) const {
+    if (w.size() > 1)
+      fail(fmt::format("'{}' stands alone on its line, found {} after it", w[0], quote(w[1])));
+  }
+
+  void handle(const std::vector<std::string_view>& w) {
+    const std::string_view first = w[0];
+    if (first == "segment" || first == "polygon") {
+      no_more(w);
+      if (block_)
+        fail(fmt::format("'{}' inside the '{}' block opened on line {} ('end' missing?)", first,
+                         kind(), block_->line));
+      block_.emplace();
+      block_->polygon = first == "polygon";
+      block_->line = line_;
+    } else if (first == "end") {
+      no_more(w);
+      if (!block_) fail("'end' without an open 'segment' or 'polygon' block");
+      close_block();
+    } else if (first == "label") {
+      if (block_)
+        fail(fmt::format("'label' inside the '{}' block opened on line {}: label the point before "
+                         "the block, then write its name in the block",
+                         kind(), block_->line));
+      if (w.size() < 2) fail("'label' needs a name and a point: label NAME x y, or label NAME w x y");
+      if (!is_name(w[1]))
+        fail(fmt::format("{} is not a label name: use letters, digits, _ and ', starting with a "
+                         "letter or _",
+                         quote(w[1])));
+      if (is_keyword(w[1])) fail(fmt::format("{} is a keyword, not a label name", quote(w[1])));
+      if (const ScenePoint* old = scene_.find(w[1]))
+        fail(fmt::format("label {} is already defined on line {}", quote(w[1]), old->line));
+      if (w.size() == 2) fail(fmt::format("label {} has no point: label NAME x y, or label NAME w x y", quote(w[1])));
+      ScenePoint p = point({w.begin() + 2, w.end()});
+      p.label = std::string(w[1]);
+      scene_.points.push_back(std::move(p));
+    } else if (is_letter(first[0]) && !looks_non_finite(first)) {
+      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, end)", quote(first)));
+      const ScenePoint* p = scene_.find(first);
+      if (!p)
+        fail(fmt::format("{} is neither a keyword nor a label defined above", quote(first)));
+      no_more(w);
+      block_->points.push_back(ScenePoint{p->point, line_, p->label});
+    } else {
+      ScenePoint p = point(w);
+      if (block_)
+        block_->points.push_back(std::move(p));
+      else
+        scene_.points.push_back(std::move(p));
+    }
+  }
+
+  double number(std::string_view t) const {
+    std::string_view s = t;
+    if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
+    double v = 0;
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (r.ptr != s.data() + s.size() || r.ec == std::errc::invalid_argument)
+      fail(fmt::format("{} is not a number", quote(t)));
+    if (r.ec == std::errc::result_out_of_range) {
+      // from_chars refuses both overflow and underflow to zero; strtod tells them apart.
+      const std::string copy(s);
+      const double big = std::strtod(copy.c_str(), nullptr);
+      if (std::isinf(big)) fail(fmt::format("{} is too large for a double", quote(t)));
+      fail(fmt::format("{} is too small for a double: it would round to 0", quote(t)));
+    }
+    if (!std::isfinite(v)) fail(fmt::format("{} is not a finite number", quote(t)));
+    return v;
+  }
+
+  ScenePoint point(const std::vector<std::string_view>& w) const {
+    for (auto t : w) (void)number(t);  // report a bad number before a bad count
+    if (w.size() != 2 && w.size() != 3)
+      fail(fmt::format("a point is 2 numbers (x y) or 3 (w x y), found {}", w.size()));
+    double c[3] = {1, 0, 0};
+    for (std::size_t i = 0; i < w.size(); ++i) c[3 - w.size() + i] = number(w[i]);
+    if (c[0] == 0 && c[1] == 0 && c[2] == 0) fail("[0,0,0] is not a point of T2");
+    return ScenePoint{Point(c[0], c[1], c[2]), line_, {}};
+  }
+
+  void check_edge(const ScenePoint& p, const ScenePoint& q, int line, const char* what) const {
+    if (q.point == antipode(p.point))
+      throw ParseError(scene_.name, line,
+                       fmt::format("{}: segment(p, q) is undefined when q = antipode(p); here p = {} "
+                                   "(line {}) and q = {} (line {})",
+                                   what, to_string(p.point), p.line, to_string(q.point), q.line));
+  }
+
+  void close_block() {
+    Block b = std::move(*block_);
+    block_.reset();
+    const std::size_t n = b.points.size();
+    if (!b.polygon) {
+      if (n != 2) fail(fmt::format("a segment has exactly 2 points, this one has {}", n));
+      check_edge(b.points[0], b.points[1], b.points[1].line, "segment");
+      scene_.segments.push_back(SceneSegment{b.points[0], b.points[1], b.line});
+      return;
+    }
+    if (n < 3) fail(fmt::format("a polygon has at least 3 vertices, this one has {}", n));
+    for (std::size_t i = 1; i < n; ++i)
+      check_edge(b.points[i - 1], b.points[i], b.points[i].line,
+                 fmt::format("polygon edge {}-{}", i, i + 1).c_str());
+    check_edge(b.points[n - 1], b.points[0], line_, fmt::format("closing polygon edge {}-1", n).c_str());
+    scene_.polygons.push_back(ScenePolygon{std::move(b.points), b.line});
+  }
+
+  std::string_view text_;
+  Scene scene_;
+  int line_ = 0;
+  std::optional<Block> block_;
+};
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, std::string name) { return Parser(text, std::move(name)).run(); }
+
+Scene read_scene(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(name.c_str(), "rb"), &std::fclose);
+  if (!f) throw BadInput(fmt::format("{}: cannot read the scene file: {}", name, std::strerror(errno)));
+  std::string text;
+  char buf[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);
+  if (std::ferror(f.get()))
+    throw BadInput(fmt::format("{}: cannot read the scene file: {}", name, std::strerror(errno)));
+  return parse_scene(text, name);
+}
+
+}  // namespace t2
