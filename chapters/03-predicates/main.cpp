@@ -1,0 +1,449 @@
+// Chapter 03, predicates: orientation, sides, join/meet and duality, point on segment, the
+// wxy order, distances in T¹ and infinite distances, the midpoint, angles and Algorithm 1.
+//
+// Prints every number the chapter quotes and writes its figures, in the planar and the
+// spherical model, into --figures DIR. Deterministic. Where a seed formula is shown, the
+// program implements it literally (so that its failures can be printed) next to the
+// corrected version, and checks both against an independent oracle.
+#include <t2/t2.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using t2::ExactPoint;
+using t2::Integer;
+using t2::Point;
+using t2::Sign;
+namespace dr = t2::draw;
+
+std::string str(const Point& p) { return t2::to_string(p); }
+std::string str(const ExactPoint& p) { return t2::to_string(p); }
+const char* sym(Sign s) { return t2::to_symbol(s); }
+
+// ---------------------------------------------------------------------------------------------
+// 1. Orientation and the side of a line.
+
+void orientation() {
+  std::cout << "== 1. Orientation and sides\n";
+  //> orient-demo
+  const Point p(1, 0, 0), q(1, 2, 0), r(1, 1, 1);  // three front points, counter-clockwise
+  const Point s(-1, -1, -1);                        // a back point: the antipode of r
+  const t2::Line l = t2::join(p, q);                // the oriented line p ∨ q
+  //< orient-demo
+  std::cout << "orient(p, q, r) = " << sym(t2::orient(p, q, r)) << "   orient(q, p, r) = " << sym(t2::orient(q, p, r))
+            << "   orient(p, q, s) = " << sym(t2::orient(p, q, s)) << "   (s = antipode(r))\n";
+  std::cout << "orient(p, q, [7, 7, 7]) = " << sym(t2::orient(p, q, Point(7, 7, 7)))
+            << " (a positive multiple of r: the same point)\n";
+  std::cout << "p v q = " << t2::to_string(l) << ";  side(p v q, r) = " << sym(t2::side(l, r))
+            << ", side(p v q, s) = " << sym(t2::side(l, s)) << ", side(Omega, s) = " << sym(t2::side(t2::omega(), s))
+            << "\n";
+  // Δ(p, q, r) = (p ∨ q) ⋄ r, checked on every triple of a small integer grid of both sides.
+  int triples = 0, agree = 0;
+  for (int a = -1; a <= 1; a += 2)
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y) {
+        const ExactPoint u(a, x, y), v(1, y, -x), w(a * 2, x + y, 1);
+        if (t2::orient(u, v, ExactPoint(1, 0, 0)) == t2::ZERO && t2::orient(u, v, ExactPoint(0, 1, 0)) == t2::ZERO &&
+            t2::orient(u, v, ExactPoint(0, 0, 1)) == t2::ZERO)
+          continue;  // u = ±v: no line
+        ++triples;
+        agree += t2::side(t2::join(u, v), w) == t2::orient(u, v, w);
+      }
+  std::cout << "side(join(u, v), w) == orient(u, v, w) on " << agree << " of " << triples << " test triples\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. Join, meet, duality.
+
+void join_meet_duality() {
+  std::cout << "== 2. Join, meet and duality\n";
+  //> meet-demo
+  const ExactPoint a = ExactPoint::cartesian(0, 0), b = ExactPoint::cartesian(4, 2);
+  const ExactPoint c = ExactPoint::cartesian(0, 1), d = ExactPoint::cartesian(4, 3);
+  const t2::ExactLine ab = t2::join(a, b), cd = t2::join(c, d);  // two parallel lines
+  const ExactPoint m = t2::meet(ab, cd);                          // they meet on Omega
+  const ExactPoint n = t2::meet(cd, ab);                          // swapped: the antipode
+  //< meet-demo
+  std::cout << "ab = " << t2::to_string(ab) << ", cd = " << t2::to_string(cd) << "\nmeet(ab, cd) = " << str(m)
+            << ", meet(cd, ab) = " << str(n) << ", n == antipode(m): " << (n == t2::antipode(m)) << "\n";
+  try {
+    (void)t2::meet(ab, t2::reverse(ab));
+  } catch (const t2::Undefined& e) {
+    std::cout << "meet(ab, reverse(ab)) throws t2::Undefined: " << e.what() << "\n";
+  }
+  // Duality: the point with the line's coordinates, and back. side(l, p) = side(dual(p), dual(l)).
+  int checked = 0, agree = 0;
+  for (int w = -2; w <= 2; ++w)
+    for (int x = -2; x <= 2; ++x)
+      for (int y = -2; y <= 2; ++y) {
+        if (w == 0 && x == 0 && y == 0) continue;
+        const ExactPoint p(w, x, y);
+        for (const t2::ExactLine& l : {ab, cd, t2::omega<Integer>()}) {
+          ++checked;
+          agree += t2::side(l, p) == t2::side(t2::dual(p), t2::dual(l));
+        }
+      }
+  std::cout << "side(l, p) == side(dual(p), dual(l)) on " << agree << " of " << checked << " pairs\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. Point on segment.
+
+//> on-segment
+// r lies on the segment from p to q (p != ±q) iff r = αp + βq with α, β >= 0. Take any point
+// m off the line p ∨ q: then Δ(m, r, q) = α Δ(m, p, q) and Δ(m, p, r) = β Δ(m, p, q), so the
+// two coefficients are read off from orientation signs — no division, exact.
+template <class T>
+bool on_segment(const t2::BasicPoint<T>& p, const t2::BasicPoint<T>& q, const t2::BasicPoint<T>& r) {
+  if (t2::orient(p, q, r) != t2::ZERO) return false;  // not even on the line
+  const t2::BasicPoint<T> axes[3] = {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}};
+  for (const auto& m : axes) {
+    const Sign base = t2::orient(m, p, q);
+    if (base == t2::ZERO) continue;  // m is on the line: try the next axis point
+    return t2::orient(m, r, q) * base >= 0 && t2::orient(m, p, r) * base >= 0;
+  }
+  throw t2::Undefined("segment(p, q) is undefined when q = p or q = antipode(p)");
+}
+//< on-segment
+
+void point_on_segment() {
+  std::cout << "== 3. Point on segment\n";
+  // The oracle: solve r = αp + βq in exact rationals from two independent coordinates.
+  auto oracle = [](const ExactPoint& p, const ExactPoint& q, const ExactPoint& r) {
+    const Integer c[3][3] = {{p.w(), p.x(), p.y()}, {q.w(), q.x(), q.y()}, {r.w(), r.x(), r.y()}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j) {
+        const Integer det = c[0][i] * c[1][j] - c[0][j] * c[1][i];
+        if (det == 0) continue;
+        t2::Rational alpha(c[2][i] * c[1][j] - c[2][j] * c[1][i], det);
+        t2::Rational beta(c[0][i] * c[2][j] - c[0][j] * c[2][i], det);
+        alpha.canonicalize();  // mpq_class(n, d) does not normalize signs and common factors
+        beta.canonicalize();
+        for (int k = 0; k < 3; ++k)  // r must really be αp + βq
+          if (alpha * c[0][k] + beta * c[1][k] != c[2][k]) return false;
+        return alpha >= 0 && beta >= 0;
+      }
+    return false;
+  };
+  //> on-segment-demo
+  const ExactPoint p(1, 0, 0), q(-1, -2, 0);  // p front, q back: the segment runs through Omega
+  const ExactPoint mid_omega(0, -1, 0);       // the point at infinity it passes through
+  //< on-segment-demo
+  std::cout << "p = " << str(p) << ", q = " << str(q) << ": on_segment(p, q, [0,-1,0]) = "
+            << on_segment(p, q, mid_omega) << ", on_segment(p, q, [0,1,0]) = "
+            << on_segment(p, q, ExactPoint(0, 1, 0)) << ", on_segment(p, q, [1,1,0]) = "
+            << on_segment(p, q, ExactPoint(1, 1, 0)) << ", on_segment(p, q, [1,-1,0]) = "
+            << on_segment(p, q, ExactPoint(1, -1, 0)) << "\n";
+  int cases = 0, agree = 0, inside = 0;
+  for (int pw = -1; pw <= 1; ++pw)
+    for (int px = -2; px <= 2; ++px)
+      for (int qw = -1; qw <= 1; ++qw)
+        for (int qx = -2; qx <= 2; ++qx)
+          for (int rw = -2; rw <= 2; ++rw)
+            for (int rx = -3; rx <= 3; ++rx) {
+              const int py = 1, qy = -1;  // p and q are never equal
+              if (rw == 0 && rx == 0) continue;
+              const ExactPoint pp(pw, px, py), qq(qw, qx, qy);
+              if (pp == t2::antipode(qq)) continue;  // no segment between antipodes
+              for (int ry = -2; ry <= 2; ++ry) {
+                const ExactPoint rr(rw, rx, ry);
+                ++cases;
+                const bool o = oracle(pp, qq, rr);
+                inside += o;
+                agree += on_segment(pp, qq, rr) == o;
+              }
+            }
+  std::cout << "on_segment agrees with the rational oracle on " << agree << " of " << cases << " cases (" << inside
+            << " inside)\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. The lexicographic wxy order.
+
+//> lex-order
+// Compare normalized coordinates [w/|w|, x/|w|, y/|w|] without dividing: first the side of T²
+// (back < Omega < front), then x/|w| against x'/|w'| as x·|w'| against x'·|w|, then y likewise.
+// For two points of Omega the seed gives no normalization; here they are ordered by x then y
+// after scaling by max(|x|, |y|), compared the same way by cross-multiplication.
+Sign compare_wxy(const ExactPoint& a, const ExactPoint& b) {
+  if (t2::sign_of(a.w()) != t2::sign_of(b.w())) return t2::sign_of(Integer(t2::sign_of(a.w()) - t2::sign_of(b.w())));
+  Integer sa = abs(a.w()), sb = abs(b.w());
+  if (sa == 0) {
+    sa = std::max(abs(a.x()), abs(a.y()));
+    sb = std::max(abs(b.x()), abs(b.y()));
+  }
+  if (const Sign s = t2::sign_of(Integer(a.x() * sb - b.x() * sa)); s != t2::ZERO) return s;
+  return t2::sign_of(Integer(a.y() * sb - b.y() * sa));
+}
+//< lex-order
+
+void lexicographic() {
+  std::cout << "== 4. Lexicographic wxy order\n";
+  std::vector<ExactPoint> pts = {ExactPoint(2, 2, 0),  ExactPoint(1, 1, 5), ExactPoint(-1, 3, 0), ExactPoint(0, 1, 1),
+                                 ExactPoint(-3, -3, 3), ExactPoint(0, -2, 0), ExactPoint(4, 4, -4), ExactPoint(1, 1, 1)};
+  std::stable_sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return compare_wxy(a, b) < 0; });
+  std::cout << "sorted:";
+  for (const auto& p : pts) std::cout << ' ' << str(p);
+  std::cout << "\nnormalized:";
+  for (const auto& p : pts) std::cout << ' ' << str(t2::normalized(t2::to_double(p)));
+  std::cout << "\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Squared distance in T¹ and infinite distances.
+
+//> squared-distance
+// Seed 000, §4.3.1: the squared distance of two proper points as a point of T¹,
+// [sign(aw bw)(aw bw)², (ax bw - bx aw)² + (ay bw - by aw)²]. Front-back pairs get a
+// negative weight: a distance "beyond infinity".
+t2::ExactT1 squared_distance(const ExactPoint& a, const ExactPoint& b) {
+  if (a.w() == 0 || b.w() == 0) throw t2::Undefined("squared_distance(a, b) needs two proper points (w != 0)");
+  const Integer ww = a.w() * b.w(), dx = a.x() * b.w() - b.x() * a.w(), dy = a.y() * b.w() - b.y() * a.w();
+  return t2::ExactT1(ww > 0 ? Integer(ww * ww) : Integer(-ww * ww), dx * dx + dy * dy);
+}
+//< squared-distance
+
+//> sweep-test
+// Which of the proper points a, b (same side of T²) is nearer to the point at infinity c?
+// Seed 000, §4.3.1: r = a ∨ c, n = the direction normal to r entering its positive side,
+// r⊥ = a ∨ n; then r⊥ ⋄ b > 0 means a is nearer. Returns NEGATIVE when a is nearer.
+Sign compare_to_infinite(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  const t2::ExactLine r = t2::join(a, c);
+  const ExactPoint n(0, r.X(), r.Y());  // the normal direction of r, towards its positive side
+  const t2::ExactLine r_perp = t2::join(a, n);
+  return -t2::side(r_perp, b);
+}
+//< sweep-test
+
+//> angle-test
+// Which of the points at infinity b, c is nearer to the proper point a? Compare the angles
+// a·o·b and a·o·c at the origin o of space: cos(aob) = (a·b)/(|a||b|). Squared with signs,
+// (a·b)|c| > (a·c)|b| becomes a polynomial test. Returns NEGATIVE when b is nearer.
+Sign compare_infinite_to(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  const Integer ab = a.w() * b.w() + a.x() * b.x() + a.y() * b.y();
+  const Integer ac = a.w() * c.w() + a.x() * c.x() + a.y() * c.y();
+  const Integer bb = b.w() * b.w() + b.x() * b.x() + b.y() * b.y();
+  const Integer cc = c.w() * c.w() + c.x() * c.x() + c.y() * c.y();
+  // sign(ab)·ab²·cc versus sign(ac)·ac²·bb: the larger cosine is the smaller angle.
+  const Integer lhs = sgn(ab) * ab * ab * cc, rhs = sgn(ac) * ac * ac * bb;
+  return t2::sign_of(Integer(rhs - lhs));
+}
+//< angle-test
+
+void distances() {
+  std::cout << "== 5. Distances\n";
+  const ExactPoint a = ExactPoint::cartesian(0, 0), b = ExactPoint::cartesian(3, 4), nb(-1, -3, -4);
+  std::cout << "d2(a, b) = " << t2::to_string(squared_distance(a, b)) << "  d2(a, [-1,-3,-4]) = "
+            << t2::to_string(squared_distance(a, nb)) << "  (negative weight: beyond infinity)\n";
+  std::cout << "compare(d2(a,b), +infinity) = " << sym(t2::compare(squared_distance(a, b), t2::ExactT1::plus_infinity()))
+            << "\n";
+  // Oracle for the sweep test: a is nearer to the direction c iff (a - b)·c > 0 (the limit of
+  // |b - T c| - |a - T c| as T grows). Checked over a grid of front pairs and directions.
+  int cases = 0, agree = 0;
+  for (int ax = -2; ax <= 2; ++ax)
+    for (int ay = -2; ay <= 2; ++ay)
+      for (int bx = -2; bx <= 2; ++bx)
+        for (int by = -2; by <= 2; ++by)
+          for (int cx = -2; cx <= 2; ++cx)
+            for (int cy = -2; cy <= 2; ++cy) {
+              if (cx == 0 && cy == 0) continue;
+              const ExactPoint pa = ExactPoint::cartesian(ax, ay), pb = ExactPoint::cartesian(bx, by), pc(0, cx, cy);
+              if (pa == pb) continue;
+              const int dot = (ax - bx) * cx + (ay - by) * cy;
+              ++cases;
+              agree += compare_to_infinite(pa, pb, pc) == -t2::sign_of(dot);
+            }
+  std::cout << "sweep test agrees with the limit (a - b)·c on " << agree << " of " << cases << " front cases\n";
+  // Oracle for the angle test: the limit of |a - T b/|b|| - |a - T c/|c||, i.e. a·ĉ - a·b̂, in
+  // long double (the grid keeps the values far apart).
+  cases = agree = 0;
+  for (int ax = -2; ax <= 2; ++ax)
+    for (int ay = -2; ay <= 2; ++ay)
+      for (int bx = -2; bx <= 2; ++bx)
+        for (int by = -2; by <= 2; ++by)
+          for (int cx = -2; cx <= 2; ++cx)
+            for (int cy = -2; cy <= 2; ++cy) {
+              if ((bx == 0 && by == 0) || (cx == 0 && cy == 0)) continue;
+              const long double lb = std::sqrt(static_cast<long double>(bx * bx + by * by)),
+                                lc = std::sqrt(static_cast<long double>(cx * cx + cy * cy));
+              const long double diff = (ax * cx + ay * cy) / lc - (ax * bx + ay * by) / lb;
+              const int want = std::fabs(diff) < 1e-12L ? 0 : (diff > 0 ? 1 : -1);
+              ++cases;
+              agree += compare_infinite_to(ExactPoint::cartesian(ax, ay), ExactPoint(0, bx, by), ExactPoint(0, cx, cy)) ==
+                       want;
+            }
+  std::cout << "angle test agrees with the limit a·c^ - a·b^ on " << agree << " of " << cases << " front cases\n";
+  //> two-notions
+  const ExactPoint u = ExactPoint::cartesian(10, 0), v = ExactPoint::cartesian(21, 200), dir(0, 1, 0);
+  const Sign sweep = compare_to_infinite(u, v, dir);  // the Euclidean limit
+  const Integer cu = u.x() * u.x() * (v.w() * v.w() + v.x() * v.x() + v.y() * v.y());
+  const Integer cv = v.x() * v.x() * (u.w() * u.w() + u.x() * u.x() + u.y() * u.y());
+  const Sign angle = t2::sign_of(Integer(cv - cu));  // sphere angles u·o·dir against v·o·dir
+  //< two-notions
+  std::cout << "u = (10, 0), v = (21, 200), direction [0,1,0]: the sweep says " << (sweep < 0 ? "u" : "v")
+            << " is nearer to [0,1,0]; the sphere angle says " << (angle < 0 ? "u" : "v") << "\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6. The midpoint.
+
+//> midpoints
+// The naive homogeneous midpoint, straight from the Cartesian formula.
+ExactPoint naive_midpoint(const ExactPoint& p, const ExactPoint& q) {
+  return ExactPoint(2 * p.w() * q.w(), p.x() * q.w() + q.x() * p.w(), p.y() * q.w() + q.y() * p.w());
+}
+// Seed 000, §4.3.2 (after de Rezende & Stolfi): weight each point by the other's |w|.
+ExactPoint seed_midpoint(const ExactPoint& p, const ExactPoint& q) {
+  const Integer ap = abs(p.w()), aq = abs(q.w());
+  return ExactPoint(aq * p.w() + ap * q.w(), aq * p.x() + ap * q.x(), aq * p.y() + ap * q.y());
+}
+//< midpoints
+
+void midpoints() {
+  std::cout << "== 6. The midpoint\n";
+  const ExactPoint f1 = ExactPoint::cartesian(0, 0), f2(2, 4, 2), b1(-1, -2, 2), b2(-2, 0, -4);
+  struct Case {
+    const char* name;
+    ExactPoint p, q;
+  };
+  for (const Case& c : {Case{"front-front", f1, f2}, Case{"back-back  ", b1, b2}, Case{"front-back ", f1, b1}}) {
+    const ExactPoint n = naive_midpoint(c.p, c.q), s = seed_midpoint(c.p, c.q);
+    std::cout << c.name << "  p = " << str(c.p) << " q = " << str(c.q) << "  naive " << str(n) << " ("
+              << (n.w() > 0 ? "front" : n.w() < 0 ? "back" : "Omega") << ")  seed " << str(s) << " ("
+              << (s.w() > 0 ? "front" : s.w() < 0 ? "back" : "Omega") << ", on segment: " << on_segment(c.p, c.q, s)
+              << ")\n";
+  }
+  try {
+    (void)seed_midpoint(ExactPoint(0, 1, 0), ExactPoint(0, 0, 1));
+  } catch (const t2::Undefined& e) {
+    std::cout << "seed formula on two points of Omega, [0,1,0] and [0,0,1]: " << e.what() << "\n";
+  }
+  std::cout << '\n';
+}
+
+// ---------------------------------------------------------------------------------------------
+// 7. Angles: Algorithm 1 of seed 000 and its correction.
+
+//> algorithm-1
+// Algorithm 1 of seed 000, literally: p, q are directions (points of Omega); o = [1,0,0],
+// d = [0,1,0]. Returns POSITIVE for "angle p > angle q".
+Sign algorithm_1(const ExactPoint& p, const ExactPoint& q) {
+  const ExactPoint o(1, 0, 0), d(0, 1, 0);
+  if (t2::orient(p, o, q) * t2::orient(p, o, d) == t2::POSITIVE) return t2::POSITIVE;
+  if (t2::orient(p, o, q) == t2::ZERO) return t2::ZERO;
+  return t2::NEGATIVE;
+}
+//< algorithm-1
+
+//> compare-angle
+// Corrected: the angle of a direction in [0, 2π) counter-clockwise from d = [0,1,0]. First
+// the half it lies in (upper: y > 0, or y = 0 and x > 0), then the orientation inside a half.
+Sign compare_angle(const ExactPoint& p, const ExactPoint& q) {
+  auto half = [](const ExactPoint& v) { return (v.y() > 0 || (v.y() == 0 && v.x() > 0)) ? 0 : 1; };
+  if (half(p) != half(q)) return half(p) < half(q) ? t2::NEGATIVE : t2::POSITIVE;
+  return t2::orient(p, ExactPoint(1, 0, 0), q);  // = sign of sin(angle p - angle q)
+}
+//< compare-angle
+
+void angles() {
+  std::cout << "== 7. Angles\n";
+  // Sixteen directions, at known angles, in counter-clockwise order from [0,1,0].
+  const int dirs[16][2] = {{1, 0},  {2, 1},   {1, 1},   {1, 2},   {0, 1},  {-1, 2}, {-1, 1}, {-2, 1},
+                           {-1, 0}, {-2, -1}, {-1, -1}, {-1, -2}, {0, -1}, {1, -2}, {1, -1}, {2, -1}};
+  int total = 0, bad1 = 0, bad1_upper = 0, badc = 0;
+  std::vector<std::string> failures;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j) {
+      const ExactPoint p(0, dirs[i][0], dirs[i][1]), q(0, dirs[j][0], dirs[j][1]);
+      const Sign want = t2::sign_of(i - j);  // the oracle: the index order is the angle order
+      ++total;
+      const Sign a1 = algorithm_1(p, q);
+      if (a1 != want) {
+        ++bad1;
+        if (i <= 8 && j <= 8) {  // both in the closed upper half [0, π]: the seed's own domain
+          ++bad1_upper;
+          failures.push_back(str(p) + " vs " + str(q) + ": says " + sym(a1) + ", truth " + sym(want));
+        }
+      }
+      badc += compare_angle(p, q) != want;
+    }
+  std::cout << "Algorithm 1 is wrong on " << bad1 << " of " << total << " ordered pairs; " << bad1_upper
+            << " of them have both angles in [0, pi]:\n";
+  for (const auto& f : failures) std::cout << "  " << f << "\n";
+  std::cout << "compare_angle is wrong on " << badc << " of " << total << "\n\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figures.
+
+void figures(const std::filesystem::path& dir) {
+  dr::PlaneView plane;
+  plane.half_width = 3;
+  dr::SphereView sphere;
+  int written = 0;
+  {  // Orientation: p, q, r and the back point s = ¬r, with the positive side of p ∨ q shaded.
+    const Point p(1, 0, 0), q(1, 2, 0), r(1, 1, 1), s(-1, -1, -1);
+    dr::Figure f;
+    f.add(t2::join(p, q), dr::Style().color("#777777").shade().arrow());
+    f.segment(p, q, dr::Style().width(2.2));
+    f.add(p, dr::Style().label("p").label_angle(-135));
+    f.add(q, dr::Style().label("q").label_angle(-45));
+    f.add(r, dr::Style().color("#1f77b4").label("r"));
+    f.add(s, dr::Style().color("#d62728").label("s = \u00acr").label_angle(135));
+    written += dr::save(f, plane, dir / "orient-plane.svg");
+    written += dr::save(f, sphere, dir / "orient-sphere.svg");
+  }
+  {  // Midpoints: naive (red) against the seed's formula (green), for the three cases.
+    const ExactPoint f1 = ExactPoint::cartesian(0, 0), f2(2, 4, 2), b1(-1, -2, 2), b2(-2, 0, -4);
+    dr::Figure f;
+    const std::pair<ExactPoint, ExactPoint> pairs[3] = {{f1, f2}, {b1, b2}, {f1, b1}};
+    const char* names[3][2] = {{"p1", "q1"}, {"p2", "q2"}, {"", "q3"}};
+    int k = 0;
+    for (const auto& [p, q] : pairs) {
+      f.segment(p, q, dr::Style().color("#555555"));
+      f.add(p, dr::Style().label(names[k][0]).label_angle(-135));
+      f.add(q, dr::Style().label(names[k][1]));
+      ++k;
+      f.add(seed_midpoint(p, q), dr::Style().color("#2ca02c").marker(dr::Marker::square).size(5));
+      f.add(naive_midpoint(p, q), dr::Style().color("#d62728").marker(dr::Marker::cross).size(5));
+    }
+    written += dr::save(f, plane, dir / "midpoint-plane.svg");
+    written += dr::save(f, sphere, dir / "midpoint-sphere.svg");
+  }
+  {  // The sweep test: a, b proper, c at infinity; r⊥ through a, normal to a ∨ c.
+    const ExactPoint a = ExactPoint::cartesian(0, 0), b = ExactPoint::cartesian(1, 1), c(0, 2, 1);
+    const t2::ExactLine r = t2::join(a, c);
+    const t2::ExactLine rp = t2::join(a, ExactPoint(0, r.X(), r.Y()));
+    dr::Figure f;
+    f.add(r, dr::Style().color("#999999").arrow());
+    f.add(rp, dr::Style().color("#1f77b4").shade());
+    f.add(a, dr::Style().label("a"));
+    f.add(b, dr::Style().label("b"));
+    f.add(c, dr::Style().color("#d62728").label("c"));
+    written += dr::save(f, plane, dir / "sweep-plane.svg");
+    written += dr::save(f, sphere, dir / "sweep-sphere.svg");
+  }
+  std::cout << "figures: 6 in " << dir.filename().string() << " (" << written << " changed)\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::filesystem::path dir = dr::figures_dir(argc, argv, T2_FIGURES_DIR);
+  std::cout << std::boolalpha;
+  orientation();
+  join_meet_duality();
+  point_on_segment();
+  lexicographic();
+  distances();
+  midpoints();
+  angles();
+  figures(dir);
+}
