@@ -7,4 +7,5 @@ scripts/deps.sh
 cmake --preset default
 cmake --build --preset default
 cmake --build --preset default --target docs
+build/default/bin/t2 book --quiet   # the HTML book: build/default/book/index.html
 echo "built: build/default/bin/t2 (try: build/default/bin/t2 --help)"

@@ -173,7 +173,7 @@ int build_book(const BuildOptions& o) {
                     const std::string& pagetitle, const std::vector<std::pair<std::string, std::string>>& vars,
                     bool toc) {
     std::vector<std::string> argv = {"pandoc", input.string(), "--from=markdown+tex_math_dollars-implicit_header_references",
-                                     "--to=html5", "--standalone", "--mathml",
+                                     "--to=html5", "--standalone", "--mathml", "--wrap=none",
                                      "--template=" + (bookdir / "template.html").string(),
                                      "--lua-filter=" + (bookdir / "book.lua").string(),
                                      "--highlight-style=tango",
