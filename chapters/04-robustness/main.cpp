@@ -298,8 +298,20 @@ void filter_costs(const SignMap&) {
       (void)t2::orient(p, q, t2::Point(a * p.w() + b * q.w(), a * p.x() + b * q.x(), a * p.y() + b * q.y()));
     }
   });
+  // One evaluation of the filter, opened up: the value, the magnitude and the bound.
+  auto show = [](const char* name, const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+    //> filter-worked
+    const t2::Filtered d = t2::det3<t2::Filtered>(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y());
+    const double bound = (d.depth + 3) * 0x1p-53 * d.mag;  // the certificate of filter.hpp
+    //< filter-worked
+    std::printf("%-20s v = %-24.17g mag = %-10.6g depth = %d  bound = %-10.3g  %s\n", name, d.v, d.mag, d.depth, bound,
+                std::fabs(d.v) > bound ? "certain" : "uncertain: exact stage");
+  };
+  show("a random triple", t2::Point(1, 0.25, -0.5), t2::Point(1, 0.75, 0.125), t2::Point(1, -0.375, 0.5));
+  show("grid cell (3, 200)", t2::Point::cartesian(0.5 + 3 * 0x1p-53, 0.5 + 200 * 0x1p-53), t2::Point::cartesian(12, 12),
+       t2::Point::cartesian(24, 24));
   auto row = [](const char* name, Count c) {
-    std::printf("%-22s %7llu calls %7llu exact  (%6.2f%%)\n", name, static_cast<unsigned long long>(c.calls),
+    std::printf("%-22s %7llu calls %7llu exact  (%7.3f%%)\n", name, static_cast<unsigned long long>(c.calls),
                 static_cast<unsigned long long>(c.exact), 100.0 * static_cast<double>(c.exact) / static_cast<double>(c.calls));
   };
   row("random in [-1,1)^3", random);
