@@ -86,6 +86,13 @@ std::vector<std::string_view> split(std::string_view s) {
   return words;
 }
 
+// An open `segment` or `polygon` block.
+struct Block {
+  bool polygon = false;
+  int line = 0;
+  std::vector<ScenePoint> points;
+};
+
 class Parser {
  public:
   Parser(std::string_view text, std::string name) : text_(text) { scene_.name = std::move(name); }
@@ -111,12 +118,6 @@ class Parser {
   }
 
  private:
-  struct Block {
-    bool polygon = false;
-    int line = 0;
-    std::vector<ScenePoint> points;
-  };
-
   [[noreturn]] void fail(const std::string& message) const {
     throw ParseError(scene_.name, line_, message);
   }

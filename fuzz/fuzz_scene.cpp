@@ -1,0 +1,26 @@
+// libFuzzer target: t2::parse_scene on arbitrary bytes. A valid input must parse; an invalid
+// one must throw t2::ParseError whose message starts with "name:line: " (line >= 1). Any other
+// exception, a crash or a sanitizer report is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "t2/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  try {
+    const t2::Scene s = t2::parse_scene(text, "fuzz");
+    // Every accepted point is a point of T2, every segment has non-antipodal endpoints.
+    for (const auto& g : s.segments)
+      if (g.b.point == t2::antipode(g.a.point)) std::abort();
+    for (const auto& p : s.polygons)
+      if (p.vertices.size() < 3) std::abort();
+  } catch (const t2::ParseError& e) {
+    const std::string prefix = "fuzz:" + std::to_string(e.line()) + ": ";
+    if (e.line() < 1 || std::string_view(e.what()).substr(0, prefix.size()) != prefix) std::abort();
+  }
+  return 0;
+}
