@@ -1,1 +1,2 @@
 t2_long_test(test_orient "Orient.*:Side.*" 1000)
+t2_long_test(test_polygon "PolygonTyped*" 100)

@@ -15,3 +15,7 @@
 #include "t2/io.hpp"
 #include "t2/draw.hpp"
 #include "t2/scene.hpp"
+#include "t2/polygon.hpp"
+#include "t2/point_in_polygon.hpp"
+#include "t2/closest_point.hpp"
+#include "t2/ear_clipping.hpp"
