@@ -212,6 +212,16 @@ TEST(Scene, LabelsSegmentsAndPolygons) {
   expect_coords(s.polygons[0].vertices[3].point, -1, 2, 3);
   EXPECT_EQ(s.polygons[0].vertices[3].line, 12);
   EXPECT_EQ(s.polygons[0].vertices[1].line, 10);
+  // The library types: t2::Segment and t2::Polygon with the same points.
+  const Segment g = s.segments[0].segment();
+  expect_coords(g.source(), 1, 0, 0);
+  expect_coords(g.target(), 0, 0, 1);
+  const Polygon P = s.polygons[0].polygon();
+  ASSERT_EQ(P.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point& v = s.polygons[0].vertices[i].point;
+    expect_coords(P[i], v.w(), v.x(), v.y());
+  }
 }
 
 TEST(Scene, ParseErrorIsBadInputWithFileAndLine) {

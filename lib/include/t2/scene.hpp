@@ -28,6 +28,8 @@
 
 #include "t2/error.hpp"
 #include "t2/point.hpp"
+#include "t2/polygon.hpp"
+#include "t2/segment.hpp"
 
 namespace t2 {
 
@@ -63,6 +65,8 @@ struct SceneSegment {
   ScenePoint a;   ///< the first endpoint
   ScenePoint b;   ///< the second endpoint
   int line = 0;   ///< the line of the `segment` keyword
+  /// The segment of T² from a to b (the parser has checked that it is defined).
+  Segment segment() const { return Segment(a.point, b.point); }
 };
 
 /// A `polygon ... end` block: three or more vertices in order; no two consecutive ones
@@ -70,6 +74,13 @@ struct SceneSegment {
 struct ScenePolygon {
   std::vector<ScenePoint> vertices;  ///< the vertices, in the order of the file
   int line = 0;                      ///< the line of the `polygon` keyword
+  /// The vertices as a `t2::Polygon`, for the algorithms of polygon.hpp.
+  Polygon polygon() const {
+    Polygon p;
+    p.reserve(vertices.size());
+    for (const auto& v : vertices) p.push_back(v.point);
+    return p;
+  }
 };
 
 /// Everything a scene file holds.
