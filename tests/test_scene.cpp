@@ -224,6 +224,31 @@ TEST(Scene, LabelsSegmentsAndPolygons) {
   }
 }
 
+TEST(Scene, LabelsThatLookLikeNumberWordsAndManyLabels) {
+  // "inf1" and "nancy" are names; "inf" and "NaN" read as numbers.
+  const Scene s = parse_scene("label inf1 1 2\nlabel nancy 3 4\nsegment\ninf1\nnancy\nend\n", "w");
+  ASSERT_EQ(s.segments.size(), 1u);
+  EXPECT_EQ(s.segments[0].a.label, "inf1");
+  expect_coords(s.segments[0].b.point, 1, 3, 4);
+  expect_error("label inf 1 2\n", 1, "'inf' reads as a number, not a label name");
+  expect_error("label NaN 1 2\n", 1, "'NaN' reads as a number");
+  expect_error("info 1 2\n", 1, "unknown keyword 'info'");
+  // Many labels, each referenced once: every reference finds its own point.
+  std::string text;
+  const int n = 5000;
+  for (int i = 0; i < n; ++i) text += "label P" + std::to_string(i) + " " + std::to_string(i) + " 1\n";
+  text += "polygon\n";
+  for (int i = n - 1; i >= 0; --i) text += "P" + std::to_string(i) + "\n";
+  text += "end\n";
+  const Scene big = parse_scene(text, "big");
+  ASSERT_EQ(big.polygons.size(), 1u);
+  ASSERT_EQ(big.polygons[0].vertices.size(), std::size_t(n));
+  for (int i = 0; i < n; ++i) {
+    expect_coords(big.polygons[0].vertices[i].point, 1, n - 1 - i, 1);
+    ASSERT_EQ(big.find("P" + std::to_string(i))->line, i + 1);
+  }
+}
+
 TEST(Scene, ParseErrorIsBadInputWithFileAndLine) {
   try {
     (void)parse_scene("1 2\n\n1 2 3 4\n", "some/dir/x.t2");

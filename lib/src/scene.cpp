@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <system_error>
+#include <unordered_map>
 #include <utility>
 
 namespace t2 {
@@ -65,12 +66,12 @@ bool is_name(std::string_view w) {
   return true;
 }
 
-// Words that from_chars would read as a non-finite value: "inf", "-nan", "Infinity" ...
-bool looks_non_finite(std::string_view w) {
-  if (!w.empty() && (w[0] == '+' || w[0] == '-')) w.remove_prefix(1);
-  std::string low;
-  for (char c : w.substr(0, 8)) low += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return low.starts_with("inf") || low.starts_with("nan");
+// Words that from_chars reads, whole, as a non-finite value: "inf", "-nan", "Infinity" ...
+bool is_non_finite_number(std::string_view w) {
+  if (w.size() > 1 && w[0] == '+') w.remove_prefix(1);
+  double v = 0;
+  const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
+  return r.ec == std::errc() && r.ptr == w.data() + w.size() && !std::isfinite(v);
 }
 
 // Splits a line (comment already removed) into words.
@@ -153,19 +154,23 @@ class Parser {
                          "letter or _",
                          quote(w[1])));
       if (is_keyword(w[1])) fail(fmt::format("{} is a keyword, not a label name", quote(w[1])));
-      if (const ScenePoint* old = scene_.find(w[1]))
-        fail(fmt::format("label {} is already defined on line {}", quote(w[1]), old->line));
+      if (is_non_finite_number(w[1])) fail(fmt::format("{} reads as a number, not a label name", quote(w[1])));
+      if (const auto old = labels_.find(std::string(w[1])); old != labels_.end())
+        fail(fmt::format("label {} is already defined on line {}", quote(w[1]),
+                         scene_.points[old->second].line));
       if (w.size() == 2) fail(fmt::format("label {} has no point: label NAME x y, or label NAME w x y", quote(w[1])));
       ScenePoint p = point({w.begin() + 2, w.end()});
       p.label = std::string(w[1]);
+      labels_.emplace(p.label, scene_.points.size());
       scene_.points.push_back(std::move(p));
-    } else if (is_letter(first[0]) && !looks_non_finite(first)) {
-      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, end)", quote(first)));
-      const ScenePoint* p = scene_.find(first);
-      if (!p)
-        fail(fmt::format("{} is neither a keyword nor a label defined above", quote(first)));
+    } else if (const auto found = block_ ? labels_.find(std::string(first)) : labels_.end();
+               found != labels_.end()) {
       no_more(w);
-      block_->points.push_back(ScenePoint{p->point, line_, p->label});
+      const ScenePoint& p = scene_.points[found->second];
+      block_->points.push_back(ScenePoint{p.point, line_, p.label});
+    } else if (is_letter(first[0]) && !is_non_finite_number(first)) {
+      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, end)", quote(first)));
+      fail(fmt::format("{} is neither a keyword nor a label defined above", quote(first)));
     } else {
       ScenePoint p = point(w);
       if (block_)
@@ -233,6 +238,7 @@ class Parser {
   Scene scene_;
   int line_ = 0;
   std::optional<Block> block_;
+  std::unordered_map<std::string, std::size_t> labels_;  // name -> index in scene_.points
 };
 
 }  // namespace
