@@ -1,0 +1,106 @@
+#pragma once
+/// @file angle.hpp
+/// @brief Angles as points of Ω (seed 000, §4.3.7): the angular difference ^− and the
+/// comparison of angles, with the correction of the seed's Algorithm 1.
+///
+/// A point [0, x, y] of Ω is a direction, and it stands for the angle θ that the vector (x, y)
+/// makes with the x axis, counter-clockwise, in [0, 2π): the angle 0 is [0, 1, 0]. No angle is
+/// ever computed as a real number; everything is a polynomial in the coordinates.
+///
+/// **Difference.** d1 ^− d2 = [0, x1 x2 + y1 y2, y1 x2 − x1 y2] is the direction of angle
+/// θ1 − θ2 (as complex numbers, d1 times the conjugate of d2). The angle p̂qr of three proper
+/// points is dir(q→p) ^− dir(q→r).
+///
+/// **Comparison.** The seed's Algorithm 1 compares two directions p, q with o = [1, 0, 0]
+/// and d = [0, 1, 0]: "p > q" when Δ(p, o, q)·Δ(p, o, d) = +1, "p = q" when Δ(p, o, q) = 0,
+/// "p < q" otherwise. Here Δ(p, o, q) = −(p_x q_y − p_y q_x) and Δ(p, o, d) = p_y, so the
+/// algorithm decides by which way q turns from p, and that is the order of the angles only
+/// when both lie in the first two quadrants, θ ∈ [0, π), and are not antipodal. As printed
+/// it answers wrongly (found by the brute force of tests/test_angle.cpp against atan2) when:
+/// - p and q are antipodal, e.g. [0,1,0] and [0,−1,0]: "equal" (the determinant is zero);
+/// - θp ∈ (0, π) and θq ∈ (θp + π, 2π): "p > q" (q is "behind" p by less than half a turn);
+/// - θp = π, p = [0, −1, 0]: "p < q" for every q, also for q in the upper half;
+/// - θp ∈ (π, 2π): wrong for every θq ∈ (θp − π, 2π) other than θp: it answers by the turn,
+///   and the angles the turn puts "ahead" of p wrap around past 2π.
+/// It is not even antisymmetric. `compare_angle_algorithm1` keeps it as printed, for the chapter.
+///
+/// The correction, `compare_angle`, first compares the half turns [0, π) (y > 0, or y = 0 and
+/// x > 0) and [π, 2π), and only inside one half uses the turn from p to q, which there is less
+/// than half a turn and so decides: a full-turn comparison counter-clockwise from [0, 1, 0].
+
+#include <cmath>
+#include <type_traits>
+
+#include "t2/error.hpp"
+#include "t2/filter.hpp"
+#include "t2/orient.hpp"
+#include "t2/point.hpp"
+#include "t2/sign.hpp"
+
+namespace t2 {
+
+namespace detail {
+
+template <class T>
+void require_direction(const BasicPoint<T>& d, const char* rule) {
+  if (d.w() != 0) throw Undefined(rule);
+}
+
+/// 0 for θ in [0, π), 1 for θ in [π, 2π).
+template <class T>
+int angle_half(const BasicPoint<T>& d) {
+  if (d.y() > 0) return 0;
+  if (d.y() < 0) return 1;
+  return d.x() > 0 ? 0 : 1;
+}
+
+}  // namespace detail
+
+/// d1 ^− d2: the direction of the angle θ1 − θ2 (see the file comment). Both arguments must be
+/// points of Ω, else throws `Undefined`. A construction: exact for `Integer`, rounded for
+/// `double`.
+template <class T>
+BasicPoint<T> angle_difference(const BasicPoint<T>& d1, const BasicPoint<T>& d2) {
+  const char* rule = "angle_difference(d1, d2) is defined for directions only: points [0, x, y] of Omega";
+  detail::require_direction(d1, rule);
+  detail::require_direction(d2, rule);
+  const T x = d1.x() * d2.x() + d1.y() * d2.y();
+  const T y = d1.y() * d2.x() - d1.x() * d2.y();
+  if constexpr (std::is_same_v<T, double>) {
+    if ((x == 0 && y == 0) || !std::isfinite(x) || !std::isfinite(y))
+      return to_double(angle_difference(to_exact(d1), to_exact(d2)));
+  }
+  return BasicPoint<T>(T(0), x, y);
+}
+
+/// Compares the angles of two directions p, q (points of Ω), measured counter-clockwise from
+/// [0, 1, 0] in [0, 2π): NEGATIVE when θp < θq, ZERO when p = q. The corrected Algorithm 1 (see
+/// the file comment). Throws `Undefined` when p or q is not on Ω. Exact.
+template <class T>
+Sign compare_angle(const BasicPoint<T>& p, const BasicPoint<T>& q) {
+  const char* rule = "compare_angle(p, q) compares directions only: points [0, x, y] of Omega";
+  detail::require_direction(p, rule);
+  detail::require_direction(q, rule);
+  const int hp = detail::angle_half(p), hq = detail::angle_half(q);
+  if (hp != hq) return hp < hq ? NEGATIVE : POSITIVE;
+  // Same half turn: q is ahead of p iff p_x q_y - p_y q_x > 0.
+  return sign_of_poly([](const auto& a, const auto& b, const auto& c, const auto& d) { return b * c - a * d; }, p.x(),
+                      p.y(), q.x(), q.y());
+}
+
+/// The seed's Algorithm 1 exactly as printed (for teaching): NEGATIVE for "∠p < ∠q", ZERO for
+/// "∠p = ∠q", POSITIVE for "∠p > ∠q". Right only when both directions are in the first two
+/// quadrants and not antipodal; see the file comment for its failures. Use `compare_angle`.
+template <class T>
+Sign compare_angle_algorithm1(const BasicPoint<T>& p, const BasicPoint<T>& q) {
+  const char* rule = "compare_angle_algorithm1(p, q) compares directions only: points [0, x, y] of Omega";
+  detail::require_direction(p, rule);
+  detail::require_direction(q, rule);
+  const BasicPoint<T> o(T(1), T(0), T(0)), d(T(0), T(1), T(0));
+  const Sign pq = orient(p, o, q);
+  if (pq * orient(p, o, d) == POSITIVE) return POSITIVE;
+  if (pq == ZERO) return ZERO;
+  return NEGATIVE;
+}
+
+}  // namespace t2

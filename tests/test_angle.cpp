@@ -1,0 +1,162 @@
+// Angles as points of Ω (§4.3.7): compare_angle against atan2 by brute force on every small
+// integer direction, the seed's Algorithm 1 as printed failing exactly where angle.hpp says, and
+// the angular difference ^− checked as a rotation.
+//
+// Why atan2 is a trustworthy oracle here: two distinct directions (x1, y1), (x2, y2) with integer
+// coordinates of absolute value at most N make an angle whose sine is |x1 y2 - x2 y1| / (|d1||d2|)
+// >= 1 / (2 N²), i.e. at least 1/(2N²) radians ≈ 0.0139 for N = 6, while std::atan2 on small
+// integers is accurate to a few units in the last place (~1e-15). Equal directions are decided
+// exactly instead, by reducing each vector to its primitive form (divide by the gcd).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "t2/angle.hpp"
+#include "testing.hpp"
+
+namespace t2 {
+namespace {
+
+using testing::scale;
+
+struct Dir {
+  long x, y;
+  double theta() const {  // in [0, 2π)
+    const double t = std::atan2(double(y), double(x));
+    return t < 0 ? t + 2 * std::numbers::pi : t;
+  }
+  std::pair<long, long> primitive() const {
+    const long g = std::gcd(x, y);
+    return {x / g, y / g};
+  }
+};
+
+std::vector<Dir> small_directions(long n) {
+  std::vector<Dir> out;
+  for (long x = -n; x <= n; ++x)
+    for (long y = -n; y <= n; ++y)
+      if (x != 0 || y != 0) out.push_back({x, y});
+  return out;
+}
+
+Sign atan2_oracle(const Dir& p, const Dir& q) {
+  if (p.primitive() == q.primitive()) return ZERO;
+  return p.theta() < q.theta() ? NEGATIVE : POSITIVE;
+}
+
+template <class P>
+P dir(const Dir& d) {
+  using T = typename P::Coordinate;
+  return P(T(0), T(d.x), T(d.y));
+}
+
+template <class P>
+void brute_force_against_atan2() {
+  const auto ds = small_directions(6);
+  for (const Dir& a : ds)
+    for (const Dir& b : ds)
+      ASSERT_EQ(compare_angle(dir<P>(a), dir<P>(b)), atan2_oracle(a, b)) << a.x << ',' << a.y << ' ' << b.x << ',' << b.y;
+}
+
+TEST(CompareAngle, MatchesAtan2OnEverySmallDirection) {
+  brute_force_against_atan2<Point>();
+  brute_force_against_atan2<ExactPoint>();
+}
+
+/// Where angle.hpp says Algorithm 1 as printed is wrong.
+bool documented_failure(const Dir& p, const Dir& q) {
+  const double pi = std::numbers::pi, tp = p.theta(), tq = q.theta();
+  const auto pp = p.primitive(), pq = q.primitive();
+  if (pp.first == -pq.first && pp.second == -pq.second) return true;  // antipodal
+  if (pp == pq) return false;
+  if (p.y > 0) return tq > tp + pi;
+  if (p.y == 0 && p.x < 0) return q.y > 0;
+  if (p.y < 0) return tq > tp - pi;
+  return false;  // p = [0, 1, 0]
+}
+
+template <class P>
+void algorithm1_failures() {
+  const auto ds = small_directions(6);
+  long wrong = 0, upper_pairs = 0;
+  for (const Dir& a : ds)
+    for (const Dir& b : ds) {
+      const bool bad = compare_angle_algorithm1(dir<P>(a), dir<P>(b)) != atan2_oracle(a, b);
+      wrong += bad;
+      ASSERT_EQ(bad, documented_failure(a, b)) << a.x << ',' << a.y << ' ' << b.x << ',' << b.y;
+      // Right in the first two quadrants, θ in [0, π), as the seed intends.
+      const bool upper = (a.y > 0 || (a.y == 0 && a.x > 0)) && (b.y > 0 || (b.y == 0 && b.x > 0));
+      if (upper) {
+        ++upper_pairs;
+        ASSERT_FALSE(bad);
+      }
+    }
+  EXPECT_GT(upper_pairs, 0);
+  EXPECT_GT(wrong, long(ds.size()));  // it does fail, and often
+  // The simplest counterexamples of the chapter.
+  EXPECT_EQ(compare_angle_algorithm1(dir<P>({1, 0}), dir<P>({-1, 0})), ZERO);           // 0 "=" π
+  EXPECT_EQ(compare_angle_algorithm1(dir<P>({0, -1}), dir<P>({1, -1})), POSITIVE);      // 3π/2 ">" 7π/4
+  EXPECT_EQ(compare_angle(dir<P>({0, -1}), dir<P>({1, -1})), NEGATIVE);
+}
+
+TEST(CompareAngle, SeedAlgorithm1FailsExactlyWhereDocumented) {
+  algorithm1_failures<Point>();
+  algorithm1_failures<ExactPoint>();
+}
+
+TEST(CompareAngle, DoublesAgreeWithTheSameIntegerPoints) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> e(-200, 200), pick(0, 3);
+  for (int i = 0; i < 5000 * scale(); ++i) {
+    const double s = std::ldexp(1.0, e(rng));
+    double px = u(rng) * s, py = u(rng) * s, qx = u(rng), qy = u(rng);
+    switch (pick(rng)) {  // also exactly parallel, antiparallel and axis directions
+      case 0: qx = 3 * px; qy = 3 * py; break;
+      case 1: qx = -px; qy = -py; break;
+      case 2: py = 0; break;
+      default: break;
+    }
+    const Point p(0, px, py), q(0, qx, qy);
+    ASSERT_EQ(compare_angle(p, q), compare_angle(to_exact(p), to_exact(q)));
+    ASSERT_EQ(compare_angle(q, p), -compare_angle(p, q));
+  }
+}
+
+TEST(CompareAngle, RejectsProperPoints) {
+  EXPECT_THROW(compare_angle(Point(1, 0, 0), Point(0, 1, 0)), Undefined);
+  EXPECT_THROW(compare_angle_algorithm1(ExactPoint(0, 1, 0), ExactPoint(-1, 1, 0)), Undefined);
+}
+
+Rational to_rational_any(const double& v) { return to_rational(v); }
+Rational to_rational_any(const Integer& v) { return Rational(v); }
+
+template <class P>
+void difference_is_a_rotation() {
+  const auto ds = small_directions(4);
+  for (const Dir& a : ds)
+    for (const Dir& b : ds) {
+      const P r = angle_difference(dir<P>(a), dir<P>(b));
+      ASSERT_TRUE(is_at_infinity(r));
+      // Rotating b by r must give a, which fixes r up to a positive factor:
+      // (b.x + i b.y)(r.x + i r.y) is a positive multiple of a.x + i a.y.
+      const Rational rx = to_rational_any(r.x()), ry = to_rational_any(r.y());
+      const Rational zx = b.x * rx - b.y * ry, zy = b.x * ry + b.y * rx;
+      ASSERT_EQ(zx * a.y - zy * a.x, 0);
+      ASSERT_GT(zx * a.x + zy * a.y, 0);
+    }
+}
+
+TEST(AngleDifference, RotatesTheSecondDirectionOntoTheFirst) {
+  difference_is_a_rotation<Point>();
+  difference_is_a_rotation<ExactPoint>();
+  EXPECT_THROW(angle_difference(Point(1, 0, 0), Point(0, 1, 0)), Undefined);
+  EXPECT_THROW(angle_difference(ExactPoint(0, 1, 0), ExactPoint(2, 1, 0)), Undefined);
+}
+
+}  // namespace
+}  // namespace t2
