@@ -25,6 +25,11 @@ inline std::array<Integer, 3> coords(const Point& p) {
 /// Integer coordinates of an exact point.
 inline std::array<Integer, 3> coords(const ExactPoint& p) { return {p.w(), p.x(), p.y()}; }
 
+/// The same point with Integer coordinates.
+inline ExactPoint exact(const Point& p) { return to_exact(p); }
+/// The same point (already exact).
+inline ExactPoint exact(const ExactPoint& p) { return p; }
+
 /// The oracle determinant, by the rule of Sarrus (not det3 of orient.hpp).
 inline Integer det_oracle(const std::array<Integer, 3>& a, const std::array<Integer, 3>& b,
                           const std::array<Integer, 3>& c) {
