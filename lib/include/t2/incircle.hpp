@@ -1,0 +1,78 @@
+#pragma once
+/// @file incircle.hpp
+/// @brief The in-circle test of T²: is d inside the oriented circle through a, b, c?
+///
+/// **Front points.** For a, b, c, d on the front side this is the Euclidean predicate of the
+/// lifting map (seed 002): lift each point (X, Y) to (X, Y, X² + Y²) on the paraboloid; d is
+/// inside the circle through a, b, c exactly when its lift lies below the plane of theirs. In
+/// homogeneous coordinates each row of the 4×4 determinant |X, Y, X² + Y², 1| is multiplied by
+/// w² > 0, which gives the polynomial rows [x w, y w, x² + y², w²] and keeps the sign. The result
+/// follows CGAL's `side_of_oriented_circle`: POSITIVE when d is inside the circle through a, b, c
+/// and a, b, c turn counter-clockwise, NEGATIVE outside, ZERO on it; reversing the turn of a, b, c
+/// reverses the answer.
+///
+/// **Both sides: the definition of T².** The homogeneous determinant alone is blind to sides (it
+/// gives ¬d the same sign as d), so T² needs a definition. With the squared distances of §4.3.1
+/// (distance.hpp), a circle of T² has a centre z and a radius in T¹; a point of the other side
+/// than z is *beyond infinity* from z. So three points on both sides of T² (or on Ω) lie on no
+/// circle, and `in_circle` throws `Undefined` for them, as for three collinear points. For a, b,
+/// c proper on one side σ and not collinear, let z be their circumcentre on side σ and r² =
+/// d²(z, a); the *disk* is the set of points with d²(z, d) < r² in the T¹ order, i.e. the points
+/// of side σ strictly inside the Euclidean circle. Then
+///
+///     in_circle(a, b, c, d) = orient(a, b, c) · (+1 if d is in the disk, 0 if d²(z, d) = r², −1 otherwise)
+///
+/// so a point d on the other side or on Ω is always outside the disk. The interior is the side
+/// to the left of the oriented circle a → b → c: the disk when orient(a, b, c) > 0, and its
+/// complement — the disk of the antipodal centre ¬z, whose radius is beyond infinity — when it
+/// is negative. Note that for three back points orient(a, b, c) is the opposite of the turn
+/// their drawn positions make (the planar model shows the back side mirrored).
+
+#include "t2/error.hpp"
+#include "t2/filter.hpp"
+#include "t2/orient.hpp"
+#include "t2/point.hpp"
+#include "t2/sign.hpp"
+
+namespace t2 {
+
+namespace detail {
+
+/// The lifted 4×4 determinant with rows [x w, y w, x² + y², w²] (Laplace along two rows).
+template <class N>
+N lifted_det4(const N& aw, const N& ax, const N& ay, const N& bw, const N& bx, const N& by, const N& cw,
+              const N& cx, const N& cy, const N& dw, const N& dx, const N& dy) {
+  const N r[4][4] = {{ax * aw, ay * aw, ax * ax + ay * ay, aw * aw},
+                     {bx * bw, by * bw, bx * bx + by * by, bw * bw},
+                     {cx * cw, cy * cw, cx * cx + cy * cy, cw * cw},
+                     {dx * dw, dy * dw, dx * dx + dy * dy, dw * dw}};
+  auto top = [&](int j, int k) { return r[0][j] * r[1][k] - r[0][k] * r[1][j]; };
+  auto bot = [&](int j, int k) { return r[2][j] * r[3][k] - r[2][k] * r[3][j]; };
+  return top(0, 1) * bot(2, 3) - top(0, 2) * bot(1, 3) + top(0, 3) * bot(1, 2) + top(1, 2) * bot(0, 3) -
+         top(1, 3) * bot(0, 2) + top(2, 3) * bot(0, 1);
+}
+
+}  // namespace detail
+
+/// Is d inside the oriented circle through a, b, c? POSITIVE inside (to the left of a → b → c),
+/// NEGATIVE outside, ZERO on the circle; CGAL's `side_of_oriented_circle` for front points. See
+/// the file comment for the definition on both sides of T². Throws `Undefined` when a, b, c are
+/// not proper points of one side, or are collinear. Exact for every finite input.
+template <class T>
+Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
+  const Sign sigma = sign_of(a.w());
+  if (sigma == ZERO || sign_of(b.w()) != sigma || sign_of(c.w()) != sigma)
+    throw Undefined(
+        "in_circle(a, b, c, d) is undefined unless a, b, c are proper points on one side: no circle of T2 "
+        "passes through points on both sides or on Omega");
+  const Sign o = orient(a, b, c);
+  if (o == ZERO) throw Undefined("in_circle(a, b, c, d) is undefined when a, b, c are collinear: they span no circle");
+  if (sign_of(d.w()) != sigma) return -o;  // beyond infinity or at infinity: outside the disk
+  const Sign h = sign_of_poly([](const auto&... v) { return detail::lifted_det4(v...); }, a.w(), a.x(), a.y(), b.w(),
+                              b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
+  // h is the Euclidean in-circle sign of the drawn positions: (their turn) * (inside ? 1 : -1),
+  // and their turn is sigma * orient(a, b, c).
+  return sigma * h;
+}
+
+}  // namespace t2

@@ -1,0 +1,181 @@
+// in_circle against its definition: the circumcentre z of the drawn positions of a, b, c is
+// computed exactly with rationals, the disk is the set of points on the side of a, b, c nearer to
+// z than a, and the answer is orient(a, b, c) times (inside ? +1 : on ? 0 : −1). The same centre,
+// made a point of T², must also satisfy the §4.3.1 distances of distance.hpp.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "t2/distance.hpp"
+#include "t2/incircle.hpp"
+#include "testing.hpp"
+
+namespace t2 {
+namespace {
+
+using testing::scale;
+
+template <class P>
+P make(long w, long x, long y) {
+  using T = typename P::Coordinate;
+  return P(T(w), T(x), T(y));
+}
+
+Rational q(const double& v) { return to_rational(v); }
+Rational q(const Integer& v) { return Rational(v); }
+
+struct Pos {
+  Rational x, y;
+};
+template <class P>
+Pos pos(const P& p) {
+  return {q(p.x()) / q(p.w()), q(p.y()) / q(p.w())};
+}
+Rational sq(const Pos& a, const Pos& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
+
+/// The circumcentre of three non-collinear positions (intersection of perpendicular bisectors).
+Pos circumcentre(const Pos& a, const Pos& b, const Pos& c) {
+  const Rational den = 2 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
+  const Rational la = a.x * a.x + a.y * a.y, lb = b.x * b.x + b.y * b.y, lc = c.x * c.x + c.y * c.y;
+  return {(la * (b.y - c.y) + lb * (c.y - a.y) + lc * (a.y - b.y)) / den,
+          (la * (c.x - b.x) + lb * (a.x - c.x) + lc * (b.x - a.x)) / den};
+}
+
+template <class P>
+Sign orient_oracle(const P& a, const P& b, const P& c) {
+  const Rational m[3][3] = {{q(a.w()), q(a.x()), q(a.y())}, {q(b.w()), q(b.x()), q(b.y())}, {q(c.w()), q(c.x()), q(c.y())}};
+  const Rational d = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return static_cast<Sign>(sgn(d));
+}
+
+/// The definition, with rationals only.
+template <class P>
+Sign in_circle_oracle(const P& a, const P& b, const P& c, const P& d) {
+  const int sigma = sgn(q(a.w()));
+  const Pos z = circumcentre(pos(a), pos(b), pos(c));
+  int inside = -1;
+  if (sgn(q(d.w())) == sigma) inside = -sgn(sq(pos(d), z) - sq(pos(a), z));
+  return orient_oracle(a, b, c) * static_cast<Sign>(inside);
+}
+
+/// The centre as a point of T² on the side sigma of a, b, c.
+ExactPoint centre_point(const Pos& z, int sigma) {
+  Integer l;
+  mpz_lcm(l.get_mpz_t(), z.x.get_den_mpz_t(), z.y.get_den_mpz_t());
+  const Rational zx = z.x * l, zy = z.y * l;  // integers now
+  return ExactPoint(Integer(sigma * l), Integer(sigma * zx.get_num()), Integer(sigma * zy.get_num()));
+}
+
+ExactPoint to_exact_any(const ExactPoint& p) { return p; }
+ExactPoint to_exact_any(const Point& p) { return to_exact(p); }
+
+template <class P>
+void matches_definition(std::uint64_t seed, long range) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long> u(-range, range), w(1, 3), sd(-1, 1);
+  int counts[3] = {0, 0, 0};
+  for (int i = 0; i < 4000 * scale(); ++i) {
+    const int sigma = sd(rng) >= 0 ? 1 : -1;
+    const P a = make<P>(sigma * w(rng), u(rng), u(rng)), b = make<P>(sigma * w(rng), u(rng), u(rng)),
+            c = make<P>(sigma * w(rng), u(rng), u(rng));
+    const long dw = sd(rng) * w(rng), dx = u(rng), dy = u(rng);  // any side, Omega included
+    const P d = make<P>(dw, dw == 0 && dx == 0 && dy == 0 ? 1 : dx, dy);
+    if (orient_oracle(a, b, c) == ZERO) {
+      ASSERT_THROW(in_circle(a, b, c, d), Undefined);
+      continue;
+    }
+    const Sign want = in_circle_oracle(a, b, c, d);
+    ++counts[want + 1];
+    ASSERT_EQ(in_circle(a, b, c, d), want) << to_string(a) << to_string(b) << to_string(c) << to_string(d);
+    ASSERT_EQ(in_circle(b, a, c, d), -want);  // reversing the turn swaps inside and outside
+    ASSERT_EQ(in_circle(b, c, a, d), want);
+    // The same answer from the distances of §4.3.1 around the centre as a point of T².
+    const ExactPoint z = centre_point(circumcentre(pos(a), pos(b), pos(c)), sigma);
+    const ExactPoint ea = to_exact_any(a), eb = to_exact_any(b), ec = to_exact_any(c), ed = to_exact_any(d);
+    ASSERT_TRUE(squared_distance(z, ea) == squared_distance(z, eb));
+    ASSERT_TRUE(squared_distance(z, ea) == squared_distance(z, ec));
+    ASSERT_EQ(in_circle(a, b, c, d), orient(a, b, c) * -compare_distance(ed, ea, z));
+  }
+  EXPECT_GT(counts[0], 0);
+  EXPECT_GT(counts[2], 0);
+  if (range <= 3) {
+    EXPECT_GT(counts[1], 0);  // small grids are full of cocircular points
+  }
+}
+
+TEST(InCircle, MatchesTheDefinitionOnBothSides) {
+  matches_definition<Point>(1, 3);
+  matches_definition<ExactPoint>(2, 3);
+  matches_definition<ExactPoint>(3, 1000);
+}
+
+TEST(InCircle, CocircularPointsAreZero) {
+  // Points of the circle x² + y² = 25 (Pythagorean) around a random centre, scaled by w.
+  const std::vector<std::pair<long, long>> circle = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0},
+                                                     {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  std::mt19937_64 rng(4);
+  std::uniform_int_distribution<std::size_t> pick(0, circle.size() - 1);
+  std::uniform_int_distribution<long> u(-50, 50), w(-4, 4);
+  for (int i = 0; i < 2000 * scale(); ++i) {
+    const long cx = u(rng), cy = u(rng);
+    long ws[4];
+    for (long& v : ws)
+      do v = w(rng);
+      while (v == 0);
+    ws[1] = ws[2] = ws[0] > 0 ? std::labs(ws[1]) : -std::labs(ws[1]);
+    auto pt = [&](long k) {
+      const auto [x, y] = circle[pick(rng)];
+      return ExactPoint(k, k * (cx + x), k * (cy + y));
+    };
+    const ExactPoint a = pt(ws[0]), b = pt(ws[1]), c = pt(ws[2]), d = pt(ws[3]);
+    if (orient(a, b, c) == ZERO) continue;
+    const Sign want = sign_of(ws[3]) == sign_of(ws[0]) ? ZERO : -orient(a, b, c);
+    ASSERT_EQ(in_circle(a, b, c, d), want);
+    ASSERT_EQ(in_circle(to_double(a), to_double(b), to_double(c), to_double(d)), want);
+  }
+}
+
+TEST(InCircle, FrontPointsFollowCgalsConvention) {
+  const Point a(1, 0, 0), b(1, 1, 0), c(1, 0, 1);  // counter-clockwise
+  EXPECT_EQ(in_circle(a, b, c, Point(1, 0.25, 0.25)), POSITIVE);
+  EXPECT_EQ(in_circle(a, b, c, Point(1, 5, 5)), NEGATIVE);
+  EXPECT_EQ(in_circle(a, b, c, Point(2, 2, 2)), ZERO);  // (1, 1) is on the circle
+  EXPECT_EQ(in_circle(a, c, b, Point(1, 0.25, 0.25)), NEGATIVE);
+  // The back copy of an inside point is beyond infinity from the centre: outside.
+  EXPECT_EQ(in_circle(a, b, c, Point(-1, -0.25, -0.25)), NEGATIVE);
+  EXPECT_EQ(in_circle(a, b, c, Point(0, 1, 1)), NEGATIVE);
+  // The circle through the antipodes turns the other way: the small disk is outside it.
+  EXPECT_EQ(orient(antipode(a), antipode(b), antipode(c)), NEGATIVE);
+  EXPECT_EQ(in_circle(antipode(a), antipode(b), antipode(c), Point(-1, -0.25, -0.25)), NEGATIVE);
+  EXPECT_EQ(in_circle(antipode(a), antipode(b), antipode(c), Point(1, 0.25, 0.25)), POSITIVE);
+}
+
+TEST(InCircle, UndefinedWithoutACircle) {
+  const ExactPoint a(1, 0, 0), b(1, 1, 0), c(1, 0, 1), d(1, 3, 3);
+  EXPECT_THROW(in_circle(a, b, antipode(c), d), Undefined);                 // both sides
+  EXPECT_THROW(in_circle(a, b, ExactPoint(0, 1, 1), d), Undefined);         // a point of Omega
+  EXPECT_THROW(in_circle(a, b, ExactPoint(1, 2, 0), d), Undefined);         // collinear
+  EXPECT_THROW(in_circle(Point(0, 1, 0), Point(1, 1, 0), Point(1, 0, 1), Point(1, 3, 3)), Undefined);
+}
+
+TEST(InCircle, RandomDoublesMatchOracle) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 3000 * scale(); ++i) {
+    const double s = u(rng) < 0 ? -1 : 1;
+    const Point a(s * (1.5 + u(rng)), u(rng), u(rng)), b(s * (1.5 + u(rng)), u(rng), u(rng)),
+        c(s * (1.5 + u(rng)), u(rng), u(rng)), d(u(rng), u(rng), u(rng));
+    ASSERT_EQ(in_circle(a, b, c, d), in_circle_oracle(a, b, c, d));
+  }
+  // Nearly cocircular: d is a rounded point of the circle through a, b, c = (1,0), (0,1), (-1,0).
+  for (int i = 0; i < 3000 * scale(); ++i) {
+    const double t = 3 * u(rng), x = std::cos(t), y = std::sin(t);
+    const Point a(1, 1, 0), b(1, 0, 1), c(1, -1, 0), d(1, x, y);
+    ASSERT_EQ(in_circle(a, b, c, d), in_circle_oracle(a, b, c, d));
+  }
+}
+
+}  // namespace
+}  // namespace t2
