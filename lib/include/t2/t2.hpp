@@ -19,3 +19,8 @@
 #include "t2/point_in_polygon.hpp"
 #include "t2/closest_point.hpp"
 #include "t2/ear_clipping.hpp"
+#include "t2/distance.hpp"
+#include "t2/midpoint.hpp"
+#include "t2/lexicographic.hpp"
+#include "t2/angle.hpp"
+#include "t2/incircle.hpp"
