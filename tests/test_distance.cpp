@@ -100,6 +100,13 @@ void squared_distance_special_cases() {
   EXPECT_THROW(compare_distance_values(BasicT1<T>(T(1), T(-1)), chain[0]), Undefined);
 }
 
+TEST(SquaredDistance, DoublesDoNotUnderflowOrOverflow) {
+  // (a_w b_w)^2 = 1e-800 underflows in double; the value is still the distance 1.
+  EXPECT_TRUE(squared_distance(Point(1e-200, 0, 0), Point(1e-200, 1e-200, 0)) == T1(1, 1));
+  EXPECT_TRUE(squared_distance(Point(0x1p700, 0, 0), Point(-0x1p700, 0x3p700, 0x4p700)) == T1(-1, 25));
+  EXPECT_TRUE(squared_distance(Point(1e-300, 1e-300, 0), Point(0, 1e300, 0)) == T1::plus_infinity());
+}
+
 TEST(SquaredDistance, SpecialCasesAndTheOrderOfT1) {
   squared_distance_special_cases<Point>();
   squared_distance_special_cases<ExactPoint>();

@@ -27,6 +27,7 @@
 /// in every configuration; see its comment for the rules and for the one undefined case.
 
 #include <string>
+#include <type_traits>
 
 #include "t2/error.hpp"
 #include "t2/filter.hpp"
@@ -39,14 +40,21 @@ namespace t2 {
 
 /// d²(a, b) as a point of T¹ (see the file comment): finite [1, |A−B|²] on the same side,
 /// "beyond infinity" [−1, |A−B|²] across sides, +∞ when exactly one point is on Ω. A
-/// construction: exact for `Integer` coordinates, rounded for `double` (use `compare_distance`
-/// to decide). Throws `Undefined` when both points are on Ω.
+/// construction: exact for `Integer` coordinates; for `double` computed exactly and then rounded
+/// once (use `compare_distance` to decide). Throws `Undefined` when both points are on Ω.
 template <class T>
 BasicT1<T> squared_distance(const BasicPoint<T>& a, const BasicPoint<T>& b) {
   if (a.w() == 0 && b.w() == 0)
     throw Undefined(
         "squared_distance(a, b) is undefined when both a and b are on Omega: the distance between two "
         "directions is an angle, not a value of T1 (compare_distance compares it)");
+  if constexpr (std::is_same_v<T, double>) {
+    // Rounded products of doubles can overflow or underflow (to +inf, or to a false [0, 0]):
+    // compute exactly and round once, scaled so that the larger coordinate is near 1.
+    const auto e = squared_distance(to_exact(a), to_exact(b));
+    const Point r = to_double(ExactPoint(e.w(), e.x(), Integer(0)));
+    return BasicT1<T>(r.w(), r.x());
+  }
   const T ww = a.w() * b.w();
   const T dx = a.x() * b.w() - b.x() * a.w();
   const T dy = a.y() * b.w() - b.y() * a.w();

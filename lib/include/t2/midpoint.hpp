@@ -8,7 +8,7 @@
 ///     midpoint(p, q) = [ |q_w| p_w + |p_w| q_w,  |q_w| p_x + |p_w| q_x,  |q_w| p_y + |p_w| q_y ].
 ///
 /// What it gives, case by case (P, Q the Cartesian positions of proper points):
-/// - p, q on the same side: |p_w q_w| times [±2, P + Q], the Euclidean midpoint on that side.
+/// - p, q on the same side σ = ±1: |p_w q_w| σ [2, P + Q], the Euclidean midpoint on that side.
 /// - p front, q back: w = 0 exactly, the point [0, P − Q] of Ω, which is where the segment pq
 ///   crosses Ω. Right: a midpoint on either side would be nearer to the point of that side (the
 ///   other is beyond infinity), so only Ω is at "equal distance".
