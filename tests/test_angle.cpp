@@ -49,6 +49,12 @@ Sign atan2_oracle(const Dir& p, const Dir& q) {
 }
 
 template <class P>
+P make_point(long w, long x, long y) {
+  using T = typename P::Coordinate;
+  return P(T(w), T(x), T(y));
+}
+
+template <class P>
 P dir(const Dir& d) {
   using T = typename P::Coordinate;
   return P(T(0), T(d.x), T(d.y));
@@ -156,6 +162,44 @@ TEST(AngleDifference, RotatesTheSecondDirectionOntoTheFirst) {
   difference_is_a_rotation<ExactPoint>();
   EXPECT_THROW(angle_difference(Point(1, 0, 0), Point(0, 1, 0)), Undefined);
   EXPECT_THROW(angle_difference(ExactPoint(0, 1, 0), ExactPoint(2, 1, 0)), Undefined);
+}
+
+template <class P>
+void angle_of_three_points(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long> u(-9, 9), w(1, 3);
+  for (int i = 0; i < 3000 * scale(); ++i) {
+    const long qw = w(rng), qx = u(rng), qy = u(rng);
+    const P p = make_point<P>(w(rng), u(rng), u(rng)), q = make_point<P>(qw, qx, qy), r = make_point<P>(w(rng), u(rng), u(rng));
+    if (p == q || r == q) {
+      ASSERT_THROW(angle(p, q, r), Undefined);
+      continue;
+    }
+    const P a = angle(p, q, r);
+    ASSERT_TRUE(is_at_infinity(a));
+    // Oracle: the rotation taking R - Q onto P - Q, in exact rationals.
+    auto pos = [](const P& v) {
+      return std::pair<Rational, Rational>{to_rational_any(v.x()) / to_rational_any(v.w()),
+                                           to_rational_any(v.y()) / to_rational_any(v.w())};
+    };
+    const auto [px, py] = pos(p);
+    const auto [qqx, qqy] = pos(q);
+    const auto [rx, ry] = pos(r);
+    const Rational ux = rx - qqx, uy = ry - qqy, vx = px - qqx, vy = py - qqy;
+    const Rational ax = to_rational_any(a.x()), ay = to_rational_any(a.y());
+    const Rational zx = ux * ax - uy * ay, zy = ux * ay + uy * ax;  // (R - Q) rotated by a
+    ASSERT_EQ(zx * vy - zy * vx, 0);
+    ASSERT_GT(zx * vx + zy * vy, 0);
+    // The back copy of the figure has the same angle; seen from a point at infinity it is zero.
+    ASSERT_TRUE(angle(antipode(p), antipode(q), antipode(r)) == a);
+    ASSERT_EQ(compare_angle(angle(p, make_point<P>(0, qx | 1, qy), r), make_point<P>(0, 1, 0)), ZERO);
+  }
+  EXPECT_THROW(angle(make_point<P>(1, 0, 0), make_point<P>(1, 1, 1), make_point<P>(-1, -1, -1)), Undefined);
+}
+
+TEST(Angle, OfThreePointsRotatesQrOntoQp) {
+  angle_of_three_points<Point>(2);
+  angle_of_three_points<ExactPoint>(3);
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 /// ever computed as a real number; everything is a polynomial in the coordinates.
 ///
 /// **Difference.** d1 ^− d2 = [0, x1 x2 + y1 y2, y1 x2 − x1 y2] is the direction of angle
-/// θ1 − θ2 (as complex numbers, d1 times the conjugate of d2). The angle p̂qr of three proper
-/// points is dir(q→p) ^− dir(q→r).
+/// θ1 − θ2 (as complex numbers, d1 times the conjugate of d2). The angle p̂qr is
+/// dir(q→p) ^− dir(q→r) (`angle(p, q, r)`).
 ///
 /// **Comparison.** The seed's Algorithm 1 compares two directions p, q with o = [1, 0, 0]
 /// and d = [0, 1, 0]: "p > q" when Δ(p, o, q)·Δ(p, o, d) = +1, "p = q" when Δ(p, o, q) = 0,
@@ -36,6 +36,7 @@
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/sign.hpp"
+#include "t2/vector.hpp"
 
 namespace t2 {
 
@@ -71,6 +72,18 @@ BasicPoint<T> angle_difference(const BasicPoint<T>& d1, const BasicPoint<T>& d2)
       return to_double(angle_difference(to_exact(d1), to_exact(d2)));
   }
   return BasicPoint<T>(T(0), x, y);
+}
+
+/// The angle p̂qr as a direction (a point of Ω): dir(q→p) ^− dir(q→r), the turn that takes the
+/// way from q towards r onto the way from q towards p, counter-clockwise, with
+/// dir = `t2::direction` (the first point of Ω met walking from q along the segment). For front
+/// points this is the Euclidean angle from qr to qp; angle(¬p, ¬q, ¬r) = angle(p, q, r); for q
+/// on Ω and p, r proper it is the angle zero, [0, 1, 0] up to a positive factor, as the seed
+/// says. Throws `Undefined` when p or r is q or ¬q, and when q and p (or q and r) are both on Ω.
+template <class T>
+BasicPoint<T> angle(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>& r) {
+  const BasicDirection<T> a = direction(q, p), b = direction(q, r);
+  return angle_difference(BasicPoint<T>(T(0), a.dx(), a.dy()), BasicPoint<T>(T(0), b.dx(), b.dy()));
 }
 
 /// Compares the angles of two directions p, q (points of Ω), measured counter-clockwise from
