@@ -8,7 +8,7 @@
 /// [0, x/m, y/m] with m = max(|x|, |y|) (the scale `t2::normalized` uses). The lexicographic
 /// order compares those triples, w first: back points (w = −1) < points of Ω (w = 0) < front
 /// points (w = +1). Mind that for a back point x/|w| = −X, minus its Cartesian coordinate X =
-/// x/w: among back points the order of the seed is the order of the *antipodes'* positions.
+/// x/w: among back points the seed's order runs against their drawn positions.
 /// All comparisons are exact, by cross-multiplication with the positive scales, no division.
 ///
 /// **Order along a line.** A line of T² is a circle (a great circle of the sphere model), so
