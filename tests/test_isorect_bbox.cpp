@@ -350,6 +350,15 @@ TYPED_TEST(RectT, IntersectionIsAlwaysDefinedAndMatchesMembership) {
   EXPECT_GT(empty, 100);
 }
 
+TYPED_TEST(RectT, ToString) {
+  using T = TypeParam;
+  using T1v = BasicT1<T>;
+  EXPECT_EQ(to_string(BasicIsoRect<T>(pt<T>(1, 0, 0), T1v(T(1), T(2)), T1v(T(1), T(3)), NEGATIVE)),
+            "iso_rect([1, 0, 0], [1, 0, 3], [1, 2, 3], [1, 2, 0], -)");
+  EXPECT_EQ(to_string(BasicBBox<T>(pt<T>(-1, 0, 0), T1v::minus_infinity(), T1v(T(1), T(3)))),
+            "bbox(x in [0, -1]..[1, 0], y in [1, 0]..[1, 3], back)");
+}
+
 TEST(BBox, Figure46FrontAndBackBoxesMeetAtInfinity) {
   // A front box unbounded towards −x and a back box whose Cartesian x grows to +∞ (which on
   // the back side is the point [0, −1, 0]): they share exactly that point of Ω.

@@ -328,6 +328,8 @@ TYPED_TEST(SegmentT, RaysAreSegmentsToInfinity) {
   EXPECT_TRUE(contains(r, pt<T>(0, 5, 0)));
   EXPECT_EQ(kind(r.segment()), SegmentKind::front_ray);
   EXPECT_THROW(BasicRay<T>(pt<T>(0, 1, 1), BasicDirection<T>(T(1), T(0))), Undefined);
+  EXPECT_EQ(BasicRay<T>(pt<T>(1, 1, 1), pt<T>(0, 3, 0)), r);
+  EXPECT_THROW(BasicRay<T>(pt<T>(1, 1, 1), pt<T>(1, 3, 0)), Undefined);
   EXPECT_THROW(BasicRay<T>::through(pt<T>(1, 1, 1), pt<T>(2, 2, 2)), Undefined);
   EXPECT_EQ(BasicRay<T>::through(pt<T>(1, 1, 1), pt<T>(1, 4, 1)), r);
   // From a back point: the ray through another back point stays on the back side.
@@ -353,6 +355,14 @@ TYPED_TEST(SegmentT, VectorsAreDifferences) {
   EXPECT_NO_THROW(V(T(2), T(0), T(0)));           // the null vector
   EXPECT_THROW(direction(V(T(2), T(0), T(0))), Undefined);
   EXPECT_EQ(direction(V(T(-1), T(3), T(0))), BasicDirection<T>(T(1), T(0)));
+}
+
+TYPED_TEST(SegmentT, ToStringOfEveryPrimitive) {
+  using T = TypeParam;
+  EXPECT_EQ(to_string(BasicSegment<T>(pt<T>(1, 0, 0), pt<T>(-1, 1, 0))), "segment([1, 0, 0] -> [-1, 1, 0])");
+  EXPECT_EQ(to_string(BasicRay<T>(pt<T>(2, 0, 0), BasicDirection<T>(T(0), T(-1)))), "ray([2, 0, 0] -> [0, 0, -1])");
+  EXPECT_EQ(to_string(BasicDirection<T>(T(3), T(-4))), "direction(3, -4)");
+  EXPECT_EQ(to_string(BasicVector<T>(T(-1), T(2), T(5))), "vector[-1, 2, 5]");
 }
 
 TEST(Segment, ToString) {

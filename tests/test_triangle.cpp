@@ -135,6 +135,12 @@ TYPED_TEST(TriangleT, ContainsMatchesBarycentricOracle) {
   EXPECT_GT(out, 500);
 }
 
+TYPED_TEST(TriangleT, ToString) {
+  using T = TypeParam;
+  EXPECT_EQ(to_string(BasicTriangle<T>(pt<T>(1, 0, 0), pt<T>(0, 1, 0), pt<T>(-1, 0, 1))),
+            "triangle([1, 0, 0], [0, 1, 0], [-1, 0, 1])");
+}
+
 TEST(Triangle, BackAndCrossingTriangles) {
   // The back copy of the unit triangle: orientation flips, it contains the back points only.
   const Triangle front(Point(1, 0, 0), Point(1, 1, 0), Point(1, 0, 1));

@@ -26,6 +26,9 @@ class BasicRay {
   BasicRay(BasicPoint<T> p, const BasicDirection<T>& d) : p_(std::move(p)), d_(d) {
     if (p_.w() == 0) throw Undefined("ray(p, d) is undefined when p is at infinity");
   }
+  /// The ray from p to the point at infinity d (a point of Ω). Throws `Undefined` when p
+  /// is on Ω or d is not.
+  BasicRay(BasicPoint<T> p, const BasicPoint<T>& d) : BasicRay(std::move(p), BasicDirection<T>(d)) {}
   /// The ray from p through q: p's direction towards q (see `direction(p, q)`). For q on the
   /// other side of T² the ray passes Ω before reaching q, so q is not on it. Throws
   /// `Undefined` when p is on Ω, or q = p, or q = ¬p.
