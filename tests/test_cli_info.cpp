@@ -91,6 +91,29 @@ TEST_F(CliInfo, SidesNormalizedAndCartesianCoordinates) {
   EXPECT_FALSE(has(r.out, "orient")) << "no --pairs, no orientations";
 }
 
+TEST_F(CliInfo, CoordinatesThatOverflowADoubleAreSaidSo) {
+  // Valid points whose x/w does not fit in a double: the point is still listed, its side and
+  // orientations are still exact.
+  write("o.t2", "1e-300 1e300 0\n-4.9406564584124654e-324 1 1\n1 2\n");
+  const Result r = t2("info --pairs o.t2");
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    if (line.starts_with("#1") || line.starts_with("#2")) {
+      ++rows;
+      EXPECT_TRUE(has(line, line.starts_with("#1") ? "front" : "back")) << line;
+      EXPECT_TRUE(has(line, "(overflows double)")) << line;
+      EXPECT_FALSE(has(line, "inf ") || has(line, "inf]") || has(line, "inf)")) << line;
+    }
+  }
+  EXPECT_EQ(rows, 2) << r.out;
+  const Point a(1e-300, 1e300, 0), b(-4.9406564584124654e-324, 1, 1), c(1, 1, 2);
+  const Sign s = testing::sign_oracle(testing::det3_oracle(a, b, c));
+  EXPECT_TRUE(has(r.out, std::string("orient(#1, #2, #3) = ") + (s > 0 ? "+1" : s < 0 ? "-1" : "0"))) << r.out;
+}
+
 TEST_F(CliInfo, PairsGiveTheExactOrientationOfConsecutiveTriples) {
   // Nearly collinear front points (the naive double determinant misjudges such triples) and
   // points of every side; the expected signs come from the rational oracle.

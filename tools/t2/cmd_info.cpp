@@ -1,6 +1,7 @@
 // t2 info: what a scene file holds, point by point.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <iterator>
 #include <optional>
@@ -24,10 +25,22 @@ const char* side_name(t2::Side s) {
   return "?";
 }
 
+// x/w or y/w may overflow a double for a valid point (w = 1e-300, x = 1e300): say so.
+constexpr const char* kOverflow = "(overflows double)";
+
 std::string cartesian(const t2::Point& p) {
   const auto c = t2::to_cartesian(p);
   if (!c) return "-";
+  if (!std::isfinite(c->first) || !std::isfinite(c->second)) return kOverflow;
   return fmt::format("({}, {})", t2::to_string(c->first), t2::to_string(c->second));
+}
+
+std::string normalized_text(const t2::Point& p) {
+  try {
+    return t2::to_string(t2::normalized(p));
+  } catch (const t2::BadInput&) {  // t2::normalized refuses a ratio that overflows
+    return kOverflow;
+  }
 }
 
 // The name of the i-th point (0-based) in messages: its label, or #k (1-based).
@@ -51,7 +64,7 @@ std::string report(const t2::Scene& s, bool pairs) {
       const auto& p = s.points[i];
       out += fmt::format("{:<6} {:<6} {:<8} {:<9} {:<36} {}\n", fmt::format("#{}", i + 1), p.line,
                          p.label.empty() ? "-" : p.label, side_name(t2::side_of(p.point)),
-                         t2::to_string(t2::normalized(p.point)), cartesian(p.point));
+                         normalized_text(p.point), cartesian(p.point));
     }
   }
   for (const auto& g : s.segments)
