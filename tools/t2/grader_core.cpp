@@ -630,7 +630,7 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
   rep.compiled = true;
 
   Limits lim;
-  lim.cpu_s = ex.time_limit;
+  lim.cpu_s = opt.time_limit > 0 ? opt.time_limit : ex.time_limit;
   lim.mem_mb = ex.memory_mb;
   lim.fsize = 1 << 20;
   int k = 0;

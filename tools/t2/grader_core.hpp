@@ -74,6 +74,7 @@ struct RunOptions {
   bool include_hidden = false;     ///< grade (public + hidden) or check (public only)
   int overall_limit = 900;         ///< seconds for the whole run, builds included
   bool verbose = false;            ///< print progress to stderr
+  int time_limit = 0;              ///< seconds of CPU per test; 0: the manifest's
 };
 
 /// Builds `submission_dir`/<source> against the exercise's tests and runs every test.

@@ -1,0 +1,187 @@
+// `t2 release student|autograder|classroom OUT`: what instructors hand out.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "command.hpp"
+#include "grader_core.hpp"
+#include "grader_release.hpp"
+#include "t2/io.hpp"
+
+#ifndef T2_SOURCE_DIR
+#define T2_SOURCE_DIR "."
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path source_root() { return fs::path(T2_SOURCE_DIR); }
+
+// Refuses a release in which any line of a reference solution, hidden test or wrong solution
+// appears (by content, wherever it is), and removes what was written.
+void check_no_leaks(const fs::path& out, const fs::path& cleanup) {
+  const auto secrets = t2grader::secret_lines(source_root());
+  const auto leaks = t2grader::find_leaks(out, secrets);
+  if (leaks.empty()) return;
+  std::error_code ec;
+  fs::remove_all(cleanup, ec);
+  std::string msg = "refusing the release: secret exercise content found in it:\n";
+  for (const auto& l : leaks) msg += "  " + l + "\n";
+  throw std::runtime_error(msg);
+}
+
+void write_release_note(const fs::path& out) {
+  std::string s =
+      "t2 student release\n\n"
+      "Build once with ./build.sh, then work on an exercise:\n"
+      "  edit exercises/NN-slug/<file>.cpp (the exercise's README.md says what to write)\n"
+      "  build/default/bin/t2 check NN     # public tests, with hints\n\n"
+      "Exercises:\n";
+  for (const auto& e : t2grader::all_exercises(out / "exercises"))
+    s += fmt::format("  {}  {}  (edit {})\n", e.id, e.title, e.source);
+  t2::write_file_atomically(out / "EXERCISES.txt", s);
+}
+
+int student(const fs::path& out) {
+  t2grader::copy_tree(source_root(), out, true);
+  check_no_leaks(out, out);
+  write_release_note(out);
+  fmt::print("wrote the student release to {}\n", out.string());
+  return t2cli::kOk;
+}
+
+int classroom(const fs::path& out) {
+  t2grader::copy_tree(source_root(), out, true);
+  check_no_leaks(out, out);
+  write_release_note(out);
+  std::string tests;
+  const auto exs = t2grader::all_exercises(out / "exercises");
+  for (size_t i = 0; i < exs.size(); ++i) {
+    const auto& e = exs[i];
+    const std::string id = e.id.substr(0, e.id.find('-'));
+    // Classroom runs in the student's own repository: only the public tests exist there.
+    tests += fmt::format(
+        "    {{\"name\": {}, \"setup\": \"./build.sh\", \"run\": \"build/default/bin/t2 check {}\", "
+        "\"input\": \"\", \"output\": \"\", \"comparison\": \"included\", \"timeout\": 10, \"points\": 1}}{}\n",
+        t2grader::json_string(e.id + ": " + e.title), id, i + 1 < exs.size() ? "," : "");
+  }
+  t2::write_file_atomically(out / ".github" / "classroom" / "autograding.json", "{\n  \"tests\": [\n" + tests + "  ]\n}\n");
+  t2::write_file_atomically(out / ".github" / "workflows" / "classroom.yml",
+                            "# GitHub Classroom autograding: the public tests of every exercise (t2 check).\n"
+                            "# Hidden tests are graded by the instructor (t2 grade, or the Gradescope bundle).\n"
+                            "name: Autograding\n"
+                            "on: [push]\n"
+                            "permissions:\n  checks: write\n  actions: read\n  contents: read\n"
+                            "jobs:\n  autograding:\n    runs-on: ubuntu-latest\n    container: debian:12\n"
+                            "    steps:\n      - uses: actions/checkout@v4\n"
+                            "      - uses: education/autograding@v1\n");
+  fmt::print("wrote the GitHub Classroom template repository to {} (.github/classroom/autograding.json)\n", out.string());
+  return t2cli::kOk;
+}
+
+int autograder(const fs::path& zip, const std::optional<std::string>& exercise) {
+  if (zip.extension() != ".zip") throw t2cli::UsageError("the autograder bundle must be a .zip file");
+  std::string ex = "auto";
+  if (exercise) ex = t2grader::find_exercise(source_root() / "exercises", *exercise).id;
+  std::string tmpl = (fs::temp_directory_path() / "t2release-XXXXXX").string();
+  if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot create a temporary directory");
+  const fs::path stage = fs::path(tmpl) / "bundle";
+  struct Cleanup {
+    fs::path p;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(p, ec);
+    }
+  } cleanup{tmpl};
+  t2grader::copy_tree(source_root(), stage, false);
+  // Reference and wrong solutions are not needed to grade: leave them out of the bundle too.
+  for (const auto& e : t2grader::all_exercises(stage / "exercises")) {
+    fs::remove_all(e.dir / "solution");
+    fs::remove_all(e.dir / "wrong");
+  }
+  fs::remove_all(stage / "exercises" / "_hostile");
+  fs::remove_all(stage / "exercises" / "_template");
+  t2::write_file_atomically(stage / "setup.sh",
+      "#!/usr/bin/env bash\n"
+      "# Gradescope autograder setup: build the t2 library and tool once.\n"
+      "set -euo pipefail\n"
+      "cd /autograder/source\n"
+      "export DEBIAN_FRONTEND=noninteractive\n"
+      "apt-get update -qq\n"
+      "apt-get install -y -qq --no-install-recommends cmake g++ make pkg-config libgtest-dev libgmock-dev \\\n"
+      "  libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev doxygen bubblewrap\n"
+      "cmake -S . -B build/default -DCMAKE_BUILD_TYPE=RelWithDebInfo\n"
+      "cmake --build build/default -j2 --target t2_tool\n");
+  t2::write_file_atomically(stage / "run_autograder",
+      fmt::format("#!/usr/bin/env bash\n"
+                  "# Gradescope entry point: grade /autograder/submission, write results.json.\n"
+                  "cd /autograder/source\n"
+                  "mkdir -p /autograder/results\n"
+                  "build/default/bin/t2 grade {} --submission /autograder/submission \\\n"
+                  "  --results /autograder/results/results.json --overall-limit 900\n",
+                  ex));
+  fs::permissions(stage / "setup.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                  fs::perm_options::add);
+  fs::permissions(stage / "run_autograder", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                  fs::perm_options::add);
+  const fs::path tmpzip = fs::path(tmpl) / "bundle.zip";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(stage.c_str()) != 0) _exit(127);
+    execlp("zip", "zip", "-q", "-r", tmpzip.c_str(), ".", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int st = 0;
+  waitpid(pid, &st, 0);
+  if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) throw std::runtime_error("zip failed (is it installed? see scripts/deps.sh)");
+  std::ifstream in(tmpzip, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  t2::write_file_atomically(zip, bytes.str());
+  fmt::print("wrote the Gradescope autograder bundle {} (exercise: {})\n", zip.string(), ex);
+  return t2cli::kOk;
+}
+
+int run(t2cli::Args args) {
+  std::optional<std::string> exercise;
+  std::vector<std::string> pos;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--exercise") {
+      if (i + 1 >= args.size()) throw t2cli::UsageError("--exercise needs a value");
+      exercise = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      throw t2cli::UsageError("unknown option " + args[i]);
+    } else {
+      pos.push_back(args[i]);
+    }
+  }
+  if (pos.size() != 2) throw t2cli::UsageError("expected: t2 release student|autograder|classroom OUT");
+  if (pos[0] == "student") return student(pos[1]);
+  if (pos[0] == "classroom") return classroom(pos[1]);
+  if (pos[0] == "autograder") return autograder(pos[1], exercise);
+  throw t2cli::UsageError("unknown release kind '" + pos[0] + "' (student, autograder or classroom)");
+}
+
+}  // namespace
+
+T2_COMMAND({"release", "write the student tree, a Gradescope autograder or a Classroom template",
+            "Usage: t2 release student OUT\n"
+            "       t2 release autograder OUT.zip [--exercise NN]\n"
+            "       t2 release classroom OUT\n\n"
+            "student: the course for students (chapters, library, figures, exercise stubs and\n"
+            "  public tests), without reference solutions, hidden tests or wrong solutions. It\n"
+            "  builds with ./build.sh and has `t2 check`. The release is refused (and removed)\n"
+            "  if any line of secret exercise content is found anywhere in it.\n"
+            "autograder: a Gradescope bundle (setup.sh, run_autograder, the sources with the\n"
+            "  hidden tests). Without --exercise it grades the exercise whose file the\n"
+            "  submission holds.\n"
+            "classroom: the student tree plus a GitHub Classroom autograding configuration\n"
+            "  (.github/classroom/autograding.json) that runs the public tests.\n",
+            run})
