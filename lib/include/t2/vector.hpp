@@ -36,15 +36,18 @@ class BasicDirection {
     if (dx_ == 0 && dy_ == 0) throw Undefined("direction(0, 0) is undefined: (0, 0) points nowhere");
   }
   /// The direction of a point at infinity. Throws `Undefined` for a proper point.
-  explicit BasicDirection(const BasicPoint<T>& at_infinity) : BasicDirection(at_infinity.x(), at_infinity.y()) {
-    if (at_infinity.w() != 0) throw Undefined("a direction is a point at infinity (w = 0)");
-  }
+  explicit BasicDirection(const BasicPoint<T>& at_infinity)
+      : BasicDirection(on_omega(at_infinity).x(), at_infinity.y()) {}
   const T& dx() const { return dx_; }  ///< first component
   const T& dy() const { return dy_; }  ///< second component
   /// The point at infinity [0, dx, dy].
   BasicPoint<T> point() const { return BasicPoint<T>(T(0), dx_, dy_); }
 
  private:
+  static const BasicPoint<T>& on_omega(const BasicPoint<T>& p) {
+    if (p.w() != 0) throw Undefined("a direction is a point at infinity (w = 0)");
+    return p;
+  }
   T dx_, dy_;
 };
 
