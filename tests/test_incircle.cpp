@@ -91,6 +91,11 @@ void matches_definition(std::uint64_t seed, long range) {
     ASSERT_EQ(in_circle(a, b, c, d), want) << to_string(a) << to_string(b) << to_string(c) << to_string(d);
     ASSERT_EQ(in_circle(b, a, c, d), -want);  // reversing the turn swaps inside and outside
     ASSERT_EQ(in_circle(b, c, a, d), want);
+    // The unoriented disk test: the inside of the finite disk, for every order of a, b, c.
+    const Pos zc = circumcentre(pos(a), pos(b), pos(c));
+    const int disk = sgn(q(d.w())) == sigma ? -sgn(sq(pos(d), zc) - sq(pos(a), zc)) : -1;
+    ASSERT_EQ(in_disk(a, b, c, d), static_cast<Sign>(disk));
+    ASSERT_EQ(in_disk(c, b, a, d), static_cast<Sign>(disk));
     // The same answer from the distances of §4.3.1 around the centre as a point of T².
     const ExactPoint z = centre_point(circumcentre(pos(a), pos(b), pos(c)), sigma);
     const ExactPoint ea = to_exact_any(a), eb = to_exact_any(b), ec = to_exact_any(c), ed = to_exact_any(d);

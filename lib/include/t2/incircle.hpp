@@ -75,4 +75,15 @@ Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<
   return sigma * h;
 }
 
+/// The unoriented test (seed 002's "side of circle", with the sign of CGAL's
+/// `side_of_bounded_circle`): POSITIVE when d is in the disk through a, b, c — the points of
+/// their side nearer than a to their centre on that side — ZERO on the circle, NEGATIVE
+/// elsewhere (the rest of that side, Ω and the other side), whatever the order of a, b, c. It is
+/// orient(a, b, c) · in_circle(a, b, c, d). Throws `Undefined` as `in_circle` does.
+template <class T>
+Sign in_disk(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
+  const Sign s = in_circle(a, b, c, d);  // checks the preconditions first
+  return orient(a, b, c) * s;
+}
+
 }  // namespace t2
