@@ -182,6 +182,10 @@ TEST(GraderReport, ResultsJsonHasGradescopesShape) {
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->score, 0) << "the seed's formula yields [0,0,0] there";
   EXPECT_NE(r.output.find("Protection:"), std::string::npos) << "the report says what protection is in force";
+  // Hidden tests can be shown after the due date instead.
+  const Results a = grade(kTool, "03", kExercises / "03-predicates" / "solution", "--hidden-visibility after_due_date");
+  for (const auto& t : a.tests)
+    EXPECT_EQ(t.visibility, t.name.rfind("Hidden.", 0) == 0 ? "after_due_date" : "visible") << t.name;
 }
 
 TEST(GraderCheck, PlainWordsHintsAndExitStatus) {

@@ -22,6 +22,7 @@ t2grader::Exercise pick(const t2grader::fs::path& root, const std::string& name,
 int run(t2cli::Args args) {
   std::optional<std::string> name, submission, results, root;
   bool quiet = false;
+  std::string visibility = "hidden";
   int limit = 900, time_limit = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -33,6 +34,11 @@ int run(t2cli::Args args) {
     else if (a == "--results") results = value();
     else if (a == "--exercises") root = value();
     else if (a == "--quiet") quiet = true;
+    else if (a == "--hidden-visibility") {
+      visibility = value();
+      if (visibility != "hidden" && visibility != "after_due_date")
+        throw t2cli::UsageError("--hidden-visibility is hidden or after_due_date, not " + visibility);
+    }
     else if (a == "--time-limit") {
       const std::string v = value();
       try {
@@ -63,7 +69,7 @@ int run(t2cli::Args args) {
   opt.overall_limit = limit;
   opt.time_limit = time_limit;
   const auto rep = t2grader::run_exercise(ex, sub, opt);
-  if (results) t2::write_file_atomically(*results, t2grader::results_json(rep));
+  if (results) t2::write_file_atomically(*results, t2grader::results_json(rep, visibility));
   if (!quiet) fmt::print("{}", t2grader::grade_summary(rep));
   return t2cli::kOk;
 }
@@ -72,13 +78,15 @@ int run(t2cli::Args args) {
 
 T2_COMMAND({"grade", "grade a submission: public and hidden tests, Gradescope results.json",
             "Usage: t2 grade NN [--submission DIR] [--results FILE] [--overall-limit SECONDS]\n"
-            "                   [--time-limit SECONDS] [--exercises DIR] [--quiet]\n\n"
+            "                   [--time-limit SECONDS] [--hidden-visibility hidden|after_due_date]\n"
+            "                   [--exercises DIR] [--quiet]\n\n"
             "Builds the submission (DIR holds the exercise's source file; default: .) against the\n"
             "public and hidden tests of exercise NN (or `auto`: the exercise whose file DIR holds)\n"
             "and runs each test in its own sandboxed process with the manifest's time and memory\n"
             "limits (--time-limit overrides the CPU seconds per test). Pass or fail is decided\n"
             "from the test process itself (a per-run secret and\n"
             "its exit status), never from what it prints. A submission that does not compile\n"
-            "scores 0. Writes Gradescope's results.json to FILE and prints a summary.\n\n"
+            "scores 0. Writes Gradescope's results.json to FILE (hidden tests marked `hidden`, or\n"
+            "`after_due_date`) and prints a summary.\n\n"
             "Exit status: 0 graded (whatever the score), 2 bad usage or a broken exercise.\n",
             run})

@@ -539,6 +539,10 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
   if (!fs::exists(lib_archive()))
     throw std::runtime_error(fmt::format("the library {} is not built: run ./build.sh first",
                                          lib_archive().string()));
+  if (opt.include_hidden && !fs::exists(ex.hidden_tests()))
+    throw std::runtime_error(fmt::format("{} has no hidden tests (is this a student release?): grading needs the "
+                                         "instructor's tree; `t2 check {}` runs the public tests",
+                                         ex.id, ex.id.substr(0, ex.id.find('-'))));
   TempDir tmp;
   const fs::path work = tmp.path;
   std::string err;
@@ -713,7 +717,7 @@ namespace {
 std::string num(double v) { return fmt::format("{}", v); }
 }  // namespace
 
-std::string results_json(const Report& r) {
+std::string results_json(const Report& r, const std::string& hidden_visibility) {
   std::string out = "{\n";
   out += "  \"score\": " + num(r.score()) + ",\n";
   std::string top = fmt::format("{}: {} of {} points. Protection: {}.", r.exercise.title, num(r.score()),
@@ -728,7 +732,7 @@ std::string results_json(const Report& r) {
     if (!t.hidden && !t.detail.empty()) o += "\n" + t.detail;
     out += "    {\"name\": " + json_string(t.name) + ", \"score\": " + num(t.passed ? t.max_score : 0) +
            ", \"max_score\": " + num(t.max_score) + ", \"output\": " + json_string(o) +
-           ", \"visibility\": \"" + (t.hidden ? "hidden" : "visible") + "\"}";
+           ", \"visibility\": \"" + (t.hidden ? hidden_visibility : "visible") + "\"}";
     out += i + 1 < r.tests.size() ? ",\n" : "\n";
   }
   out += "  ]\n}\n";

@@ -81,7 +81,8 @@ struct RunOptions {
 Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const RunOptions& opt);
 
 /// Gradescope's results.json for a report (hidden tests say only what happened, never details).
-std::string results_json(const Report& r);
+/// `hidden_visibility` is "hidden" or "after_due_date".
+std::string results_json(const Report& r, const std::string& hidden_visibility = "hidden");
 /// The human summary of `t2 grade`.
 std::string grade_summary(const Report& r);
 /// The plain-words report of `t2 check` (public tests, hints, what to try next).
