@@ -339,7 +339,8 @@ fs::path trusted_object(const fs::path& src, const Exercise* ex, const fs::path&
   const std::uint64_t h = fnv1a(key, library_fingerprint());
   const fs::path obj = cache_dir(work) / fmt::format("{}-{:016x}.o", src.stem().string(), h);
   if (fs::exists(obj)) return obj;
-  const fs::path tmp = work / fmt::format("{}-{:016x}.o.tmp", src.stem().string(), h);
+  // Compiled next to its final name, so that the rename is atomic (same file system).
+  const fs::path tmp = obj.parent_path() / fmt::format("{}-{:016x}.o.tmp{}-{}", src.stem().string(), h, getpid(), random_secret().substr(0, 8));
   std::vector<std::string> a = {"g++"};
   a.insert(a.end(), cxxflags().begin(), cxxflags().end());
   a.insert(a.end(), {"-I", lib_include_dir().string()});
@@ -563,11 +564,12 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
     const fs::path bin = cache_dir(work) / fmt::format("list-{}-{:016x}", tag, h);
     if (!fs::exists(bin)) {
       std::string out;
-      if (!link({harness, tests_obj, stub}, work / "list.bin", work, out))
+      const fs::path tmp_bin = bin.string() + fmt::format(".tmp{}-{}", getpid(), random_secret().substr(0, 8));
+      if (!link({harness, tests_obj, stub}, tmp_bin, work, out))
         throw std::runtime_error("internal error: the tests do not link with the stub:\n" + out.substr(0, 3000));
       std::error_code ec;
-      fs::rename(work / "list.bin", bin, ec);
-      if (ec) return list_tests(work / "list.bin", work);
+      fs::rename(tmp_bin, bin, ec);
+      if (ec) return list_tests(tmp_bin, work);
     }
     return list_tests(bin, work);
   };
