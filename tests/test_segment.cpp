@@ -2,6 +2,8 @@
 // integer oracles: points built as αp + βq, null vectors of [a b −c −d], brute force.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <variant>
 
 #include "t2/ray.hpp"
@@ -174,6 +176,42 @@ TYPED_TEST(SegmentT, IntersectionMatchesNullVectorOracle) {
   }
   EXPECT_GT(meet, 200);
   EXPECT_GT(miss, 200);
+}
+
+TEST(Segment, DoublesWithExtremeExponentsAgreeWithTheirExactImages) {
+  // Every double is an exact dyadic rational, so the double predicates must agree with the
+  // Integer ones on to_exact of the same points, even when products overflow or underflow.
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> m(-1, 1);
+  std::uniform_int_distribution<int> e(-300, 300), pick(0, 3);
+  auto coord = [&] { return pick(rng) == 0 ? 0.0 : std::ldexp(m(rng), e(rng)); };
+  auto point = [&] {
+    for (;;) {
+      const double w = coord(), x = coord(), y = coord();
+      if (w != 0 || x != 0 || y != 0) return Point(w, x, y);
+    }
+  };
+  int met = 0;
+  for (int i = 0; i < 1500 * scale(); ++i) {
+    const Point a = point(), b = point(), c = point(), d = point();
+    if (a == antipode(b) || c == antipode(d)) continue;
+    const Segment s(a, b), t(c, d);
+    const ExactSegment es(to_exact(a), to_exact(b)), et(to_exact(c), to_exact(d));
+    ASSERT_EQ(intersects(s, t), intersects(es, et));
+    ASSERT_EQ(on_segment(a, b, c), on_segment(to_exact(a), to_exact(b), to_exact(c)));
+    ASSERT_EQ(kind(s), kind(es));
+    const auto x = intersection(s, t);
+    const auto ex = intersection(es, et);
+    ASSERT_EQ(x.index(), ex.index());
+    if (const auto* p = std::get_if<ExactPoint>(&ex)) {
+      ++met;
+      ASSERT_EQ(std::get<Point>(x), to_double(*p));  // computed exactly, rounded once
+    }
+    if (crosses_infinity(s)) {
+      ASSERT_EQ(point_at_infinity(s), to_double(point_at_infinity(es)));
+    }
+  }
+  EXPECT_GT(met, 100);
 }
 
 TEST(Segment, AntipodalCrossingIsNotAnIntersection) {
