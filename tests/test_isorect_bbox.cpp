@@ -12,6 +12,7 @@
 namespace t2 {
 namespace {
 
+using testing::combo;
 using testing::coords;
 using testing::pt;
 using testing::scale;
@@ -73,6 +74,11 @@ TYPED_TEST(RectT, VerticesMatchCartesianOracle) {
     } else {
       ASSERT_EQ(turn, ZERO);
     }
+    // As a set the rectangle is its box: corners in, and points in by the Cartesian oracle.
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(contains(r, r.corner(k)));
+    const auto inner = pt<T>(combo(1, combo(1, coords(r.corner(0)), 1, coords(r.corner(2))), 0, coords(a)));
+    ASSERT_TRUE(contains(r, inner));  // the midpoint of the diagonal (same-side corners)
+    ASSERT_FALSE(contains(r, antipode(inner)));
     // Opposite corners give back the same rectangle.
     const auto r2 = iso_rect(a, r.corner(2), o);
     for (int k = 0; k < 4; ++k) ASSERT_EQ(r2.vertex(k), r.vertex(k));

@@ -135,6 +135,18 @@ bool contains(const BasicBBox<T>& b, const BasicPoint<T>& p) {
          compare(py, b.ymax()) <= 0;
 }
 
+/// The box of an iso-rectangle: the same corner and extents, orientation dropped.
+template <class T>
+BasicBBox<T> bbox(const BasicIsoRect<T>& r) {
+  return BasicBBox<T>(r.a(), r.dx(), r.dy());
+}
+
+/// Is p in the closed iso-rectangle r (as a set it is its box, see `contains` of boxes)? Exact.
+template <class T>
+bool contains(const BasicIsoRect<T>& r, const BasicPoint<T>& p) {
+  return contains(bbox(r), p);
+}
+
 /// The smallest box holding all the points: their proper points fix the finite bounds, and a
 /// point at infinity [0, dx, dy] makes x unbounded towards sign(w)·sign(dx) (w of the side:
 /// on the back side the Cartesian directions are mirrored), likewise y. Throws `BadInput` for
