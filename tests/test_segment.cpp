@@ -6,6 +6,7 @@
 #include <random>
 #include <variant>
 
+#include "t2/polygon.hpp"
 #include "t2/ray.hpp"
 #include "t2/segment.hpp"
 #include "t2/vector.hpp"
@@ -113,8 +114,18 @@ TYPED_TEST(SegmentT, CrossingSegmentsMeetOmegaOnTheSegment) {
     ASSERT_EQ(det_oracle(P, Q, c), 0);
     // c = |w_q| p + |w_p| q up to a positive factor.
     ASSERT_TRUE(same_point(c, combo(abs(Q[0]), P, abs(P[0]), Q)));
-    // Each half-ray: from p towards c stays on p's side, and c is on the segment.
+    // c is on the segment; the two planar pieces are half-rays of one side each, inside s.
     ASSERT_TRUE(contains(s, point_at_infinity(s)));
+    const auto pieces = planar_pieces(s);
+    ASSERT_EQ(pieces.size(), 2u);
+    ASSERT_EQ(kind(pieces[0]), pa[0] > 0 ? SegmentKind::front_ray : SegmentKind::back_ray);
+    ASSERT_EQ(kind(pieces[1]), pa[0] > 0 ? SegmentKind::back_ray : SegmentKind::front_ray);
+    for (const auto& piece : pieces) {
+      ASSERT_TRUE(contains(s, piece.source()) && contains(s, piece.target()));
+      // A point inside the piece (a positive combination of its ends) is inside s.
+      const auto m = coords(piece.source()), n = coords(piece.target());
+      ASSERT_TRUE(contains(s, pt<T>(combo(1, m, 1, n))));
+    }
   }
 }
 
@@ -212,6 +223,18 @@ TEST(Segment, DoublesWithExtremeExponentsAgreeWithTheirExactImages) {
     }
   }
   EXPECT_GT(met, 100);
+}
+
+TYPED_TEST(SegmentT, AgreesWithPolygonSegmentsIntersect) {
+  // polygon.hpp (chapter 05) has its own segment test, written independently: a cross-check.
+  using T = TypeParam;
+  Small g(17, 4);
+  for (int i = 0; i < 3000 * scale(); ++i) {
+    const auto a = pt<T>(g.triple()), b = pt<T>(g.triple()), c = pt<T>(g.triple()), d = pt<T>(g.triple());
+    if (a == antipode(b) || c == antipode(d)) continue;
+    ASSERT_EQ(intersects(BasicSegment<T>(a, b), BasicSegment<T>(c, d)), segments_intersect(a, b, c, d));
+  }
+  EXPECT_EQ(planar_pieces(BasicSegment<T>(pt<T>(1, 0, 0), pt<T>(1, 1, 0))).size(), 1u);
 }
 
 TEST(Segment, AntipodalCrossingIsNotAnIntersection) {

@@ -201,6 +201,16 @@ BasicPoint<T> point_at_infinity(const BasicSegment<T>& s) {
   }
 }
 
+/// The pieces of s as drawn in the planar model: for a crossing segment the half-ray from the
+/// source to `point_at_infinity(s)` and the one from there to the target (each on one side,
+/// kinds `front_ray`/`back_ray`); for every other segment s itself.
+template <class T>
+std::vector<BasicSegment<T>> planar_pieces(const BasicSegment<T>& s) {
+  if (!crosses_infinity(s)) return {s};
+  const BasicPoint<T> c = point_at_infinity(s);
+  return {BasicSegment<T>(s.source(), c), BasicSegment<T>(c, s.target())};
+}
+
 /// Do the closed segments s and t share a point? Exact.
 ///
 /// With n = a×b and m = c×d the normals of the two great circles (s = ab, t = cd) and
