@@ -221,6 +221,9 @@ TYPED_TEST(AffineT, IsoRectanglesUnderAxisKeepingMaps) {
       for (int j = 0; j < 4; ++j) found = found || r2.corner(j) == img;
       ASSERT_TRUE(found) << to_string(r) << " -> " << to_string(r2);
     }
+    // Boxes map like rectangles.
+    const auto b2 = transform(M, bbox(r));
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(contains(b2, transform(M, r.corner(k))));
     // The traversal of the image turns as its orientation says (non-flat rectangles).
     if (r.natural() != ZERO) {
       ASSERT_EQ(orient(r2.vertex(0), r2.vertex(1), r2.vertex(3)), r2.orientation());

@@ -40,6 +40,7 @@ TYPED_TEST(CircleT, RadiusKinds) {
   EXPECT_EQ(radius_kind(C(pt<T>(1, 0, 0), pt<T>(0, 1, 0))), RadiusKind::infinite);
   EXPECT_EQ(radius_kind(C(pt<T>(-1, 0, 0), pt<T>(0, 1, 0))), RadiusKind::infinite);
   EXPECT_THROW(C(pt<T>(0, 1, 0), pt<T>(0, 0, 1)), Undefined);
+  EXPECT_STREQ(to_string(RadiusKind::beyond_infinity), "beyond_infinity");
   EXPECT_THROW(C(pt<T>(1, 1, 0), pt<T>(1, 0, 1), ZERO), BadInput);
   EXPECT_EQ(opposite(C(pt<T>(1, 0, 0), pt<T>(1, 1, 0))).orientation(), NEGATIVE);
   EXPECT_NO_THROW(C(pt<T>(1, 2, 3), pt<T>(1, 2, 3)));    // radius zero

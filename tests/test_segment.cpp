@@ -92,6 +92,8 @@ TEST(Segment, KindsInThePlanarModel) {
   EXPECT_EQ(kind(Segment(Point(1, 0, 0), Point(0, 1, 1))), SegmentKind::front_ray);
   EXPECT_EQ(kind(Segment(Point(0, 1, 1), Point(-1, 0, 0))), SegmentKind::back_ray);
   EXPECT_EQ(kind(Segment(Point(0, 1, 0), Point(0, 1, 1))), SegmentKind::on_infinity);
+  EXPECT_STREQ(to_string(SegmentKind::crossing), "crossing");
+  EXPECT_STREQ(to_string(SegmentKind::on_infinity), "on_infinity");
   EXPECT_TRUE(crosses_infinity(ExactSegment(ExactPoint(1, 0, 0), ExactPoint(-2, 1, 1))));
   EXPECT_FALSE(crosses_infinity(ExactSegment(ExactPoint(1, 0, 0), ExactPoint(2, 1, 1))));
   EXPECT_THROW(point_at_infinity(Segment(Point(1, 0, 0), Point(2, 1, 1))), Undefined);

@@ -29,6 +29,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "t2/bbox.hpp"
 #include "t2/circle.hpp"
 #include "t2/error.hpp"
 #include "t2/filter.hpp"
@@ -236,6 +237,13 @@ BasicIsoRect<T> transform(const BasicAffine<T>& a, const BasicIsoRect<T>& r) {
                            BasicT1<T>(T(am * r.dx().w()), T(s * a.m(2, 1) * r.dx().x())), o);
   }
   throw Undefined("transform(iso_rect) needs a map that keeps the axes parallel");
+}
+
+/// The image of a bounding box, for the same maps as iso-rectangles (axes kept parallel).
+template <class T>
+BasicBBox<T> transform(const BasicAffine<T>& a, const BasicBBox<T>& b) {
+  const auto r = transform(a, BasicIsoRect<T>(b.a(), b.dx(), b.dy()));
+  return BasicBBox<T>(r.a(), r.dx(), r.dy());
 }
 
 /// The image of a circle, for similarities (linear part [[a, −b], [b, a]] or [[a, b], [b, −a]]):

@@ -35,6 +35,11 @@ enum class RadiusKind {
   beyond_infinity,  ///< centre and boundary proper, on different sides
 };
 
+/// "finite", "infinite" or "beyond_infinity".
+inline const char* to_string(RadiusKind k) {
+  return k == RadiusKind::finite ? "finite" : k == RadiusKind::infinite ? "infinite" : "beyond_infinity";
+}
+
 /// An oriented circle of T²: `center()`, a point `boundary_point()` on it, `orientation()`.
 template <class T>
 class BasicCircle {

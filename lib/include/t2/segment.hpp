@@ -154,6 +154,18 @@ enum class SegmentKind {
   on_infinity,       ///< both ends on Ω: an arc of the line at infinity
 };
 
+/// "front", "back", "crossing", "front_ray", "back_ray" or "on_infinity".
+inline const char* to_string(SegmentKind k) {
+  switch (k) {
+    case SegmentKind::front: return "front";
+    case SegmentKind::back: return "back";
+    case SegmentKind::crossing: return "crossing";
+    case SegmentKind::front_ray: return "front_ray";
+    case SegmentKind::back_ray: return "back_ray";
+    default: return "on_infinity";
+  }
+}
+
 /// The planar-model case of s (see `SegmentKind`). A front–front segment never leaves the
 /// front side, since αp + βq has w = αw_p + βw_q > 0; likewise back–back.
 template <class T>
