@@ -160,7 +160,11 @@ Proc run_limited(std::vector<std::string> argv, const fs::path& work, const Limi
   const fs::path out_path = work / out_name;
   std::vector<std::string> env = {"PATH=/usr/bin:/bin", "HOME=" + work.string(), "LANG=C",
                                   "LC_ALL=C", "TMPDIR=/tmp", "GTEST_COLOR=no"};
-  if (sanitized_tool()) env.push_back("ASAN_OPTIONS=detect_leaks=0");
+  // Children of a sanitized tool are linked with the sanitizers (libt2.a needs them): let
+  // crashes end in their signal, as in an ordinary build, so that reports name them alike.
+  if (sanitized_tool())
+    env.push_back("ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_sigill=0:"
+                  "handle_abort=0:allocator_may_return_null=1:max_allocation_size_mb=" + std::to_string(lim.mem_mb > 0 ? lim.mem_mb : 4096));
   std::vector<char*> cargv, cenv;
   for (auto& s : argv) cargv.push_back(s.data());
   cargv.push_back(nullptr);
@@ -673,6 +677,11 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
       t.what = fmt::format("timed out: still running after {:.0f} s of wall-clock time (an infinite loop, or waiting for input?)", l.wall_s);
     } else if (sig != 0 && !(record_ok && verdict == "PASS" && sig == 0)) {
       t.what = signal_words(sig, l);
+    } else if (!record_ok && p.output.find("SUMMARY: AddressSanitizer: ") != std::string::npos) {
+      // Only when the tool itself is sanitized (its children then are too): name the error kind.
+      const auto at = p.output.find("SUMMARY: AddressSanitizer: ") + 27;
+      const std::string kind = p.output.substr(at, p.output.find_first_of(" \n", at) - at);
+      t.what = fmt::format("was stopped by AddressSanitizer ({}): a memory error, or more memory than allowed", kind);
     } else if (!record_ok) {
       t.what = got_secret.empty() && code == 0
           ? "stopped before the test finished, with exit status 0: does your code call exit()?"
