@@ -65,6 +65,18 @@ TEST(GraderHostile, InfiniteLoopIsStoppedAndTheRunHasAnOverallLimit) {
   EXPECT_NE(r.output.find("overall time limit"), std::string::npos) << r.output;
 }
 
+TEST(GraderHostile, SleepingIsStoppedByTheWallClock) {
+  grade(kTool, "01", kExercises / "01-t2-plane");  // warm the cache of compiled tests
+  const Results r = grade(kTool, "01", kHostile / "sleeps", "--time-limit 1 --overall-limit 9");
+  EXPECT_EQ(r.score, 0);
+  int timed_out = 0;
+  for (const auto& t : r.tests) {
+    EXPECT_EQ(t.score, 0) << t.name;
+    if (t.output.find("timed out") != std::string::npos) ++timed_out;
+  }
+  EXPECT_GE(timed_out, 1) << "a test that never returns is a timeout, never a pass";
+}
+
 TEST(GraderHostile, Segfault) {
   expect_all_zero(grade(kTool, "01", kHostile / "segfault"), "segmentation fault");
 }
