@@ -10,3 +10,7 @@ ctest --preset default
 cmake --preset asan
 cmake --build --preset asan
 ctest --preset asan
+# A short libFuzzer run (clang) of the scene parser from the committed corpus.
+cmake -S fuzz -B build/fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build build/fuzz -j2
+ctest --test-dir build/fuzz -LE long --output-on-failure

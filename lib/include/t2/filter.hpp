@@ -86,7 +86,7 @@ namespace detail {
 /// True when x is 0 or 2⁻¹²⁰ ≤ |x| ≤ 2¹²⁰ (see the file comment).
 inline bool in_filter_range(double x) {
   const double a = std::fabs(x);
-  return (a == 0) | ((a >= 0x1p-120) & (a <= 0x1p120));
+  return a == 0 || (a >= 0x1p-120 && a <= 0x1p120);
 }
 /// True when x is an integer of magnitude below 2⁵².
 inline bool small_integer(double x) {
@@ -154,7 +154,7 @@ Sign filtered_sign(F&& f, D... args) {
   auto& stats = filter_stats();
   ++stats.calls;
   const Filtered r = f(Filtered(args)...);
-  const int s = certified_sign(r, (detail::in_filter_range(args) & ...));
+  const int s = certified_sign(r, (detail::in_filter_range(args) && ...));
   if (s != 2) return static_cast<Sign>(s);
   if ((detail::small_integer(args) && ...) && r.mag < 0x1p52) return sign_of(r.v);  // no rounding
   ++stats.exact;
