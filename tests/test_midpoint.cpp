@@ -35,7 +35,7 @@ std::array<Rational, 3> vec(const P& p) {
 /// True when m = αp + βq with α ≥ 0, β ≥ 0 (p, q independent): m is on the segment pq of T².
 /// From m × q = α (p × q) and p × m = β (p × q), and m in the plane of p and q.
 template <class P>
-::testing::AssertionResult on_segment(const P& p, const P& qq, const P& m) {
+::testing::AssertionResult on_segment_oracle(const P& p, const P& qq, const P& m) {
   using V = std::array<Rational, 3>;
   auto vcross = [](const V& x, const V& y) -> V {
     return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
@@ -60,8 +60,8 @@ void same_side(std::uint64_t seed) {
     const P m = midpoint(p, qq);
     ASSERT_EQ(sign_of(m.w()), sd);
     if (!(p == qq)) {
-      ASSERT_TRUE(on_segment(p, qq, m));
-      ASSERT_FALSE(on_segment(p, qq, antipode(m)));  // the oracle can say no
+      ASSERT_TRUE(on_segment_oracle(p, qq, m));
+      ASSERT_FALSE(on_segment_oracle(p, qq, antipode(m)));  // the oracle can say no
     }
     // The drawn position is the Euclidean midpoint.
     ASSERT_EQ(q(m.x()) / q(m.w()), (q(p.x()) / q(p.w()) + q(qq.x()) / q(qq.w())) / 2);
@@ -95,7 +95,7 @@ void opposite_sides(std::uint64_t seed) {
     }
     const P m = midpoint(p, qq);
     ASSERT_TRUE(is_at_infinity(m));
-    ASSERT_TRUE(on_segment(p, qq, m));
+    ASSERT_TRUE(on_segment_oracle(p, qq, m));
     // Neither side is nearer: m is as far from p (+inf) as from q (+inf).
     ASSERT_TRUE(squared_distance(p, m) == squared_distance(qq, m));
     ASSERT_TRUE(midpoint(qq, p) == m);
@@ -113,7 +113,7 @@ void infinity_and_undefined() {
   EXPECT_TRUE(midpoint(p, d) == d);  // halfway to infinity is infinity
   EXPECT_TRUE(midpoint(d, p) == d);
   EXPECT_TRUE(midpoint(antipode(p), d) == d);
-  EXPECT_TRUE(on_segment(p, d, midpoint(p, d)));
+  EXPECT_TRUE(on_segment_oracle(p, d, midpoint(p, d)));
   EXPECT_TRUE(midpoint(d, d) == d);
   EXPECT_TRUE(midpoint(p, p) == p);
   EXPECT_THROW(midpoint(p, antipode(p)), Undefined);
