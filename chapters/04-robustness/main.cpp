@@ -349,42 +349,42 @@ std::string raster_svg(const std::vector<int>& s, int n, const std::string& titl
   return o.str();
 }
 
-// The clipping example drawn in the (front sheet of the) planar model.
-std::string clipping_svg() {
-  const double s = 40, ox = 20, oy = 280;
-  auto X = [&](double x) { return ox + s * x; };
-  auto Y = [&](double y) { return oy - s * y; };
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"420\" height=\"300\" viewBox=\"0 0 420 300\">\n"
-    << "<title>Clipping AB by CD and EF</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  auto seg = [&](double x0, double y0, double x1, double y1, const char* col, const char* name, double lx,
-                 double ly) {
-    o << "<line x1=\"" << X(x0) << "\" y1=\"" << Y(y0) << "\" x2=\"" << X(x1) << "\" y2=\"" << Y(y1)
-      << "\" stroke=\"" << col << "\" stroke-width=\"2\"/>\n"
-      << "<text x=\"" << X(lx) << "\" y=\"" << Y(ly) << "\" font-family=\"sans-serif\" font-size=\"13\" fill=\""
-      << col << "\">" << name << "</text>\n";
-  };
-  seg(2, 2, 9, 5, "#333", "AB", 3.0, 2.8);
-  seg(8, 2, 6, 5, "#3b6fb6", "CD", 8.1, 1.6);
-  seg(4, 1, 5, 6, "#d9534f", "EF", 3.5, 0.8);
-  auto dot = [&](double x, double y, const char* name) {
-    o << "<circle cx=\"" << X(x) << "\" cy=\"" << Y(y) << "\" r=\"3.5\" fill=\"black\"/>\n<text x=\"" << X(x) + 6
-      << "\" y=\"" << Y(y) - 6 << "\" font-family=\"sans-serif\" font-size=\"13\">" << name << "</text>\n";
-  };
-  dot(2, 2, "A");
-  dot(9, 5, "B");
-  dot(20.0 / 3, 4, "H");
-  dot(141.0 / 32, 97.0 / 32, "G");
-  o << "</svg>\n";
-  return o.str();
+// The clipping example in both models of T² (t2::draw): the same points, lines and segments.
+t2::draw::Figure clipping_figure() {
+  namespace dr = t2::draw;
+  using P = t2::Point;
+  const P A = P::cartesian(2, 2), B = P::cartesian(9, 5), C = P::cartesian(8, 2), D = P::cartesian(6, 5),
+          E = P::cartesian(4, 1), F = P::cartesian(5, 6);
+  const P H = t2::meet(t2::join(A, B), t2::join(C, D)), G = t2::meet(t2::join(A, B), t2::join(E, F));
+  dr::Figure f;
+  f.segment(A, B, dr::Style().width(2));
+  f.segment(C, D, dr::Style().color("#3b6fb6").width(2));
+  f.segment(E, F, dr::Style().color("#d9534f").width(2));
+  f.add(A, dr::Style().label("A").label_angle(-135));
+  f.add(B, dr::Style().label("B"));
+  f.add(C, dr::Style().color("#3b6fb6").label("C").label_angle(-45));
+  f.add(D, dr::Style().color("#3b6fb6").label("D"));
+  f.add(E, dr::Style().color("#d9534f").label("E").label_angle(-45));
+  f.add(F, dr::Style().color("#d9534f").label("F"));
+  f.add(H, dr::Style().marker(dr::Marker::square).label("H").label_angle(-45));
+  f.add(G, dr::Style().marker(dr::Marker::square).label("G").label_angle(135));
+  return f;
 }
 
 void write_figures(const std::filesystem::path& dir, const SignMap& m) {
   int written = 0;
   written += t2::update_file_atomically(dir / "signmap-naive.svg", raster_svg(m.naive, m.n, "naive double orient"));
   written += t2::update_file_atomically(dir / "signmap-exact.svg", raster_svg(m.exact, m.n, "exact t2::orient"));
-  written += t2::update_file_atomically(dir / "clipping-planar.svg", clipping_svg());
-  std::cout << "figures: 3 in " << dir.filename().string() << " (" << written << " changed)\n";
+  t2::draw::PlaneView plane;
+  plane.cx = 5.5;
+  plane.cy = 3.5;
+  plane.half_width = 4.5;
+  written += t2::draw::save(clipping_figure(), plane, dir / "clipping-plane.svg");
+  t2::draw::SphereView sphere;  // look straight at the cluster: azimuth of (5.5, 3.5), low latitude
+  sphere.lat = 10;
+  sphere.lon = 32;
+  written += t2::draw::save(clipping_figure(), sphere, dir / "clipping-sphere.svg");
+  std::cout << "figures: 4 in " << dir.filename().string() << " (" << written << " changed)\n";
 }
 
 }  // namespace
