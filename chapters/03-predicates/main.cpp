@@ -487,7 +487,8 @@ void figures(const std::filesystem::path& dir) {
     written += dr::save(f, plane, dir / "sweep-plane.svg");
     written += dr::save(f, sphere, dir / "sweep-sphere.svg");
   }
-  std::cout << "figures: 6 in " << dir.filename().string() << " (" << written << " changed)\n";
+  std::cout << "figures: 6 in " << dir.filename().string() << "\n";
+  std::cerr << written << " figure file(s) rewritten\n";  // depends on the directory: not stdout
 }
 
 }  // namespace

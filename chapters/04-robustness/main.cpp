@@ -384,7 +384,8 @@ void write_figures(const std::filesystem::path& dir, const SignMap& m) {
   sphere.lat = 10;
   sphere.lon = 32;
   written += t2::draw::save(clipping_figure(), sphere, dir / "clipping-sphere.svg");
-  std::cout << "figures: 4 in " << dir.filename().string() << " (" << written << " changed)\n";
+  std::cout << "figures: 4 in " << dir.filename().string() << "\n";
+  std::cerr << written << " figure file(s) rewritten\n";  // depends on the directory: not stdout
 }
 
 }  // namespace
