@@ -471,7 +471,9 @@ void figures(const std::filesystem::path& dir) {
       f.add(t2::midpoint(p, q), dr::Style().color("#2ca02c").marker(dr::Marker::square).size(5));
       f.add(t2::naive_midpoint(p, q), dr::Style().color("#d62728").marker(dr::Marker::cross).size(5));
     }
-    written += dr::save(f, plane, dir / "midpoint-plane.svg");
+    dr::PlaneView wide = plane;  // room for the back half-ray of the front-back segment
+    wide.half_width = 5;
+    written += dr::save(f, wide, dir / "midpoint-plane.svg");
     written += dr::save(f, sphere, dir / "midpoint-sphere.svg");
   }
   {  // The sweep test: a, b proper, c at infinity; r⊥ through a, normal to a ∨ c.
