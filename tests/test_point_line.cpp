@@ -113,3 +113,13 @@ TEST(Line, DualityPreservesIncidenceAndSide) {
 
 }  // namespace
 }  // namespace t2
+
+namespace t2 {
+namespace {
+TEST(Point, ToExactKeepsSmallIntegersSmall) {
+  EXPECT_EQ(to_string(to_exact(Point(1, 5, 7))), "[1, 5, 7]");
+  EXPECT_EQ(to_string(to_exact(Point(0.5, -0.25, 0))), "[2, -1, 0]");
+  EXPECT_EQ(to_string(to_exact(Point(0, 0x1p100, 0x1p99))), "[0, 2, 1]");
+}
+}  // namespace
+}  // namespace t2

@@ -10,7 +10,14 @@ namespace t2 {
 
 ExactPoint to_exact(const Point& p) {
   // Each coordinate is m·2^e exactly; multiply all three by 2^-emin (a positive factor).
-  const Dyadic d[3] = {Dyadic(p.w()), Dyadic(p.x()), Dyadic(p.y())};
+  // Trailing zero bits are stripped first, so small integers stay small: [1, 5, 7] -> [1, 5, 7].
+  Dyadic d[3] = {Dyadic(p.w()), Dyadic(p.x()), Dyadic(p.y())};
+  for (auto& c : d) {
+    if (c.m == 0) continue;
+    const auto tz = mpz_scan1(c.m.get_mpz_t(), 0);
+    mpz_fdiv_q_2exp(c.m.get_mpz_t(), c.m.get_mpz_t(), tz);
+    c.e += static_cast<long>(tz);
+  }
   long emin = LONG_MAX;
   for (const auto& c : d)
     if (c.m != 0) emin = std::min(emin, c.e);

@@ -167,13 +167,30 @@ Sign exact_sign(F&& f, const auto&... args) {
   return sign_of(f(Exact<Integer>(Integer(args))...).v);
 }
 
+namespace detail {
+/// True when an integer converts to a double exactly and stays in the filter's range.
+inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= 52; }
+}  // namespace detail
+
 /// The exact sign of the polynomial `f` (a generic lambda using `+`, `-`, `*`) at `args`:
-/// filtered for `double` coordinates, computed directly for `Integer` coordinates.
+/// filtered for `double` coordinates; for `Integer` coordinates the same filter runs first when
+/// every coordinate has at most 52 bits (they convert to doubles exactly, and the filter's
+/// integer certificate often decides), and GMP integers decide the rest. Only calls on
+/// `double` coordinates are counted in filter_stats().
 template <class F, class... T>
 Sign sign_of_poly(F&& f, const T&... args) {
   if constexpr ((std::is_same_v<T, double> && ...)) {
     return filtered_sign(f, args...);
   } else {
+    if constexpr ((std::is_same_v<T, Integer> && ...)) {
+      if ((detail::fits_filter(args) && ...)) {
+        const Filtered r = f(Filtered(args.get_d())...);
+        const bool in_range = (detail::in_filter_range(args.get_d()) && ...);
+        const int s = certified_sign(r, in_range);
+        if (s != 2) return static_cast<Sign>(s);
+        if (r.mag < 0x1p52) return sign_of(r.v);  // integers, no rounding: exact
+      }
+    }
     return exact_sign(f, args...);
   }
 }
