@@ -6,6 +6,7 @@
 /// a `Style`. Setters return the style, so styles are written in one expression:
 /// `Style().color("#d62728").width(2).label("p")`.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,9 @@ class Style {
   /// Label text.
   const std::string& label() const { return label_; }
 
-  /// Direction of the label from its anchor, in degrees counter-clockwise from east
-  /// (default 45: up and to the right).
+  /// Direction of the label from its anchor, in degrees counter-clockwise from east. By default
+  /// (NaN) the direction is chosen automatically: the first of eight directions (up-right first)
+  /// where the label clears everything already drawn and the other labels.
   Style& label_angle(double deg) { label_angle_ = deg; return *this; }
   /// Direction of the label.
   double label_angle() const { return label_angle_; }
@@ -88,7 +90,7 @@ class Style {
   Marker marker_ = Marker::dot;
   double size_ = 3.5;
   std::string label_;
-  double label_angle_ = 45;
+  double label_angle_ = std::numeric_limits<double>::quiet_NaN();
   int layer_ = 0;
   std::string fill_;
   double fill_opacity_ = 0.25;
