@@ -6,6 +6,7 @@ cd "$(dirname "$0")"
 scripts/deps.sh
 cmake --preset default
 cmake --build --preset default
+build/default/bin/t2 figures          # redraw every figure (chapters and gallery) that changed
 cmake --build --preset default --target docs
 build/default/bin/t2 book --quiet   # the HTML book: build/default/book/index.html
 echo "built: build/default/bin/t2 (try: build/default/bin/t2 --help)"

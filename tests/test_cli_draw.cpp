@@ -1,0 +1,202 @@
+// `t2 draw` and `t2 figures`: runs the built tool and checks exit statuses, messages, and the
+// files it leaves behind (none on error).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "t2/draw.hpp"
+#include "t2/scene.hpp"
+#include "testing.hpp"
+
+namespace t2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+class CliDraw : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("t2_cli_draw_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  Result t2(const std::string& args) {
+    const std::string cmd = "cd '" + dir_.string() + "' && '" + std::string(T2_TOOL) + "' " + args +
+                            " </dev/null >.stdout 2>.stderr";
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir_ / ".stdout");
+    r.err = slurp(dir_ / ".stderr");
+    fs::remove(dir_ / ".stdout");
+    fs::remove(dir_ / ".stderr");
+    return r;
+  }
+
+  // The files of the test folder.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+const fs::path kExamples = fs::path(T2_SOURCE_DIR) / "data" / "examples";
+
+TEST_F(CliDraw, DrawsAnExampleSceneInEveryModelAndFormat) {
+  const std::string scene = "'" + (kExamples / "triangle.t2").string() + "'";
+  const Result svg = t2("draw " + scene + " -o both.svg");
+  ASSERT_EQ(svg.status, 0) << svg.err;
+  EXPECT_EQ(svg.out, "");
+  const std::string both = slurp(dir_ / "both.svg");
+  EXPECT_TRUE(both.starts_with("<?xml")) << both.substr(0, 100);
+  // The same picture as the library draws for the same items (labels A, B, C, D appear).
+  for (const char* label : {"plane", "sphere"}) {
+    const Result r = t2(std::string("draw ") + scene + " --model " + label + " -o " + label + ".svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(slurp(dir_ / (std::string(label) + ".svg")).starts_with("<?xml"));
+    EXPECT_NE(slurp(dir_ / (std::string(label) + ".svg")), both);
+  }
+  EXPECT_NE(slurp(dir_ / "plane.svg"), slurp(dir_ / "sphere.svg"));
+  // The view moves the sphere.
+  ASSERT_EQ(t2("draw " + scene + " --model sphere --view 60,10 -o other.svg").status, 0);
+  EXPECT_NE(slurp(dir_ / "other.svg"), slurp(dir_ / "sphere.svg"));
+  // Formats from the extension or from --format; same input, same bytes.
+  ASSERT_EQ(t2("draw " + scene + " -o p.png").status, 0);
+  EXPECT_TRUE(slurp(dir_ / "p.png").starts_with("\x89PNG"));
+  ASSERT_EQ(t2("draw " + scene + " -o d.pdf").status, 0);
+  EXPECT_TRUE(slurp(dir_ / "d.pdf").starts_with("%PDF"));
+  ASSERT_EQ(t2("draw " + scene + " --format png -o p2.img").status, 0);
+  EXPECT_EQ(slurp(dir_ / "p2.img"), slurp(dir_ / "p.png"));
+  ASSERT_EQ(t2("draw " + scene + " -o again.svg").status, 0);
+  EXPECT_EQ(slurp(dir_ / "again.svg"), both);
+}
+
+TEST_F(CliDraw, TheBackPointOfTheExampleIsHollowInThePicture) {
+  // Independent of the tool: the example's labelled back point D, drawn by the library, is
+  // hollow; the tool's picture of the plane model equals what the library draws from the
+  // same scene with the same items.
+  const Scene s = read_scene(kExamples / "triangle.t2");
+  const ScenePoint* d = s.find("D");
+  ASSERT_NE(d, nullptr);
+  EXPECT_LT(d->point.w(), 0);
+  draw::Figure f;
+  f.add(d->point);
+  const auto list = draw::display_list(f, draw::PlaneView());
+  int hollow = 0;
+  for (const auto& sh : list)
+    if (sh.kind == draw::ShapeKind::marker && sh.hollow) ++hollow;
+  EXPECT_EQ(hollow, 1);
+}
+
+TEST_F(CliDraw, ABadSceneExitsTwoWithFileAndLineAndWritesNothing) {
+  write("bad.t2", "1 2\n\nsegment\n1 2\n-1 -1 -2\nend\n");
+  for (const char* out : {"out.svg", "out.png", "sub/out.pdf"}) {
+    const Result r = t2(std::string("draw bad.t2 -o ") + out);
+    EXPECT_EQ(r.status, 2) << out;
+    EXPECT_EQ(r.out, "");
+    EXPECT_TRUE(r.err.starts_with("bad.t2:5: ")) << r.err;
+    EXPECT_TRUE(has(r.err, "segment(p, q) is undefined when q = antipode(p)")) << r.err;
+  }
+  write("bad2.t2", "1 2\n1 nan\n");
+  const Result r = t2("draw bad2.t2 --model sphere -o out.svg");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.err.starts_with("bad2.t2:2: ")) << r.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"bad.t2", "bad2.t2"}));
+}
+
+TEST_F(CliDraw, BadUsageExitsTwoAndWritesNothing) {
+  write("s.t2", "1 2\n");
+  for (const char* args : {"draw", "draw s.t2", "draw s.t2 -o", "draw s.t2 -o a.jpg", "draw s.t2 --format gif -o a.svg",
+                           "draw s.t2 --model cube -o a.svg", "draw s.t2 --view 95,0 -o a.svg",
+                           "draw s.t2 --view 10 -o a.svg", "draw s.t2 s.t2 -o a.svg", "draw s.t2 --frob -o a.svg",
+                           "draw nowhere.t2 -o a.svg"}) {
+    const Result r = t2(args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  EXPECT_EQ(files(), (std::vector<std::string>{"s.t2"}));
+  const Result h = t2("draw --help");
+  EXPECT_EQ(h.status, 0);
+  EXPECT_TRUE(h.out.starts_with("Usage: t2 draw")) << h.out;
+}
+
+TEST_F(CliDraw, FiguresCheckPassesOnThisRepository) {
+  const Result r = t2("figures --check --jobs 2");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_TRUE(has(r.out, "all up to date")) << r.out;
+}
+
+TEST_F(CliDraw, FiguresCheckFindsAChangedMissingOrExtraFigure) {
+  // A copy of the source tree's chapters/ and figures/ folders, spoiled three ways.
+  const fs::path root = dir_ / "root";
+  fs::create_directories(root);
+  fs::copy(fs::path(T2_SOURCE_DIR) / "chapters", root / "chapters", fs::copy_options::recursive);
+  fs::copy(fs::path(T2_SOURCE_DIR) / "figures", root / "figures", fs::copy_options::recursive);
+  ASSERT_EQ(t2("figures --check --root root").status, 0);
+  const fs::path changed = root / "figures" / "gallery" / "fig-3-5-orientation.svg";
+  const fs::path missing = root / "figures" / "gallery" / "fig-3-6-line-sphere.svg";
+  ASSERT_TRUE(fs::exists(changed));
+  ASSERT_TRUE(fs::exists(missing));
+  std::ofstream(changed, std::ios::app) << "\n";
+  fs::remove(missing);
+  std::ofstream(root / "figures" / "gallery" / "stale.svg") << "<svg/>";
+  const Result r = t2("figures --check --root root");
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.out, "differs: figures/gallery/fig-3-5-orientation.svg")) << r.out;
+  EXPECT_TRUE(has(r.out, "missing: figures/gallery/fig-3-6-line-sphere.svg")) << r.out;
+  EXPECT_TRUE(has(r.out, "figures/gallery/stale.svg")) << r.out;
+  // --check changes nothing; without it the figures are redrawn, and the extra file stays.
+  EXPECT_FALSE(fs::exists(missing));
+  const Result w = t2("figures --root root --jobs 1");
+  EXPECT_EQ(w.status, 0) << w.err;
+  EXPECT_TRUE(fs::exists(missing));
+  EXPECT_EQ(slurp(changed), slurp(fs::path(T2_SOURCE_DIR) / "figures" / "gallery" / "fig-3-5-orientation.svg"));
+  const Result again = t2("figures --check --root root");
+  EXPECT_EQ(again.status, 1);
+  EXPECT_FALSE(has(again.out, "differs")) << again.out;
+  EXPECT_TRUE(has(again.out, "stale.svg")) << again.out;
+}
+
+TEST_F(CliDraw, FiguresBadUsageExitsTwo) {
+  for (const char* args : {"figures --jobs 0", "figures --jobs x", "figures --frob", "figures --jobs"}) {
+    const Result r = t2(args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace t2
