@@ -216,8 +216,8 @@ void figures(const std::filesystem::path& dir) {
   plane.cy = 2;
   dr::SphereView sphere;
   int written = 0, count = 0;
-  auto save = [&](const dr::Figure& f, const std::string& name) {
-    written += dr::save(f, plane, dir / (name + "-plane.svg"));
+  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv) {
+    written += dr::save(f, pv, dir / (name + "-plane.svg"));
     written += dr::save(f, sphere, dir / (name + "-sphere.svg"));
     count += 2;
   };
@@ -231,7 +231,7 @@ void figures(const std::filesystem::path& dir) {
         const Sign s = t2::locate(poly, q);
         f.add(q, dr::Style().size(2.5).color(s > 0 ? "#2ca02c" : (s < 0 ? "#d62728" : "#000000")));
       }
-    save(f, "locate");
+    save(f, "locate", plane);
   }
   {  // A polygon of T²: the image under [w,x,y] -> [3w - y, x, y]; two vertices on the back side.
     dr::Figure f;
@@ -240,7 +240,11 @@ void figures(const std::filesystem::path& dir) {
     f.add(image, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
     for (std::size_t i = 0; i < image.size(); ++i)
       f.add(image[i], dr::Style().label("p" + std::to_string(i)));
-    save(f, "t2-polygon");
+    dr::PlaneView wide;  // wide enough for the back vertices p3 = (-6, -4) and p5 = (0, -4)
+    wide.half_width = 8;
+    wide.cx = -1;
+    wide.cy = -1;
+    save(f, "t2-polygon", wide);
   }
   {  // Ear clipping.
     dr::Figure f;
@@ -248,7 +252,7 @@ void figures(const std::filesystem::path& dir) {
       f.add(ExactPolygon{poly[t[0]], poly[t[1]], poly[t[2]]}, dr::Style().fill("#ff7f0e").fill_opacity(0.2).color("#999999"));
     f.add(poly, dr::Style().width(2));
     for (std::size_t i = 0; i < poly.size(); ++i) f.add(poly[i], dr::Style().label(std::to_string(i)));
-    save(f, "ears");
+    save(f, "ears", plane);
   }
   {  // The fifth orientation: ab crosses cd, but not ~c~d although the four signs agree.
     dr::Figure f;
@@ -262,7 +266,9 @@ void figures(const std::filesystem::path& dir) {
     f.add(d, dr::Style().label("d"));
     f.add(t2::antipode(c), dr::Style().label("~c").color("#d62728"));
     f.add(t2::antipode(d), dr::Style().label("~d").color("#d62728"));
-    save(f, "fifth");
+    dr::PlaneView centred;
+    centred.half_width = 3;
+    save(f, "fifth", centred);
   }
   {  // Closest points.
     dr::Figure f;
@@ -274,7 +280,7 @@ void figures(const std::filesystem::path& dir) {
       f.add(q, dr::Style().color("#1f77b4"));
       f.add(c, dr::Style().color("#d62728"));
     }
-    save(f, "closest");
+    save(f, "closest", plane);
   }
   std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
 }
