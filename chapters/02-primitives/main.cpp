@@ -363,7 +363,9 @@ void figures(const std::filesystem::path& dir) {
     for (int i = 0; i < 4; ++i) f.add(v[i], dr::Style().label(names[i]).label_angle(i == 0 ? -135 : 45));
     f.add(P(0, a.x(), a.y()), dr::Style().color("#d62728").marker(dr::Marker::cross).size(6).label("seed's c"));
     written += dr::save(f, plane, dir / "quadrant-plane.svg");
-    written += dr::save(f, sphere, dir / "quadrant-sphere.svg");
+    dr::SphereView facing = sphere;  // look from the quadrant's side of the sphere
+    facing.lon = 60;
+    written += dr::save(f, facing, dir / "quadrant-sphere.svg");
   }
   std::cout << "figures: 6 (segments, triangle, quadrant; plane and sphere)\n";
   std::cerr << written << " figure file(s) rewritten\n";  // depends on the directory: not stdout
