@@ -105,21 +105,33 @@ TEST_F(CliDraw, DrawsAnExampleSceneInEveryModelAndFormat) {
   EXPECT_EQ(slurp(dir_ / "again.svg"), both);
 }
 
-TEST_F(CliDraw, TheBackPointOfTheExampleIsHollowInThePicture) {
-  // Independent of the tool: the example's labelled back point D, drawn by the library, is
-  // hollow; the tool's picture of the plane model equals what the library draws from the
-  // same scene with the same items.
+TEST_F(CliDraw, TheToolKeepsTheSideOfEveryPoint) {
+  // The example's labelled point D is on the back side, so the library draws it hollow (the
+  // display list says so) ...
   const Scene s = read_scene(kExamples / "triangle.t2");
   const ScenePoint* d = s.find("D");
   ASSERT_NE(d, nullptr);
   EXPECT_LT(d->point.w(), 0);
   draw::Figure f;
   f.add(d->point);
-  const auto list = draw::display_list(f, draw::PlaneView());
   int hollow = 0;
-  for (const auto& sh : list)
+  for (const auto& sh : draw::display_list(f, draw::PlaneView()))
     if (sh.kind == draw::ShapeKind::marker && sh.hollow) ++hollow;
   EXPECT_EQ(hollow, 1);
+  // ... and the tool does not lose the side: a point and its antipode sit at the same spot of
+  // the plane, yet their pictures differ (hollow or filled), in both models; the same point
+  // written with a positive factor gives the same picture.
+  write("p.t2", "2 1 1\n");
+  write("np.t2", "-2 -1 -1\n");
+  write("p3.t2", "6 3 3\n");
+  for (const char* m : {"plane", "sphere"}) {
+    const std::string opt = std::string(" --model ") + m + " -o ";
+    ASSERT_EQ(t2("draw p.t2" + opt + "p.svg").status, 0);
+    ASSERT_EQ(t2("draw np.t2" + opt + "np.svg").status, 0);
+    ASSERT_EQ(t2("draw p3.t2" + opt + "p3.svg").status, 0);
+    EXPECT_NE(slurp(dir_ / "p.svg"), slurp(dir_ / "np.svg")) << m;
+    EXPECT_EQ(slurp(dir_ / "p.svg"), slurp(dir_ / "p3.svg")) << m;
+  }
 }
 
 TEST_F(CliDraw, ABadSceneExitsTwoWithFileAndLineAndWritesNothing) {
