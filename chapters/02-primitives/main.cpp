@@ -130,6 +130,7 @@ void rays_vectors_directions() {
   attempt("ray([0, 1, 0], direction(3, 4))",
           [&] { return t2::to_string(t2::ExactRay(P(0, 1, 0), t2::ExactDirection(Integer(3), Integer(4)))); });
   attempt("vector with tip antipode(O)", [&] { return t2::to_string(t2::ExactVector(-1, 0, 0)); });
+  attempt("vector(p, antipode(p))", [&] { return t2::to_string(t2::vector(p, t2::antipode(p))); });
   attempt("vector([0, 1, 0], q)", [&] { return t2::to_string(t2::vector(P(0, 1, 0), q)); });
   attempt("direction(0, 0)", [&] { return t2::to_string(t2::ExactDirection(Integer(0), Integer(0))); });
   attempt("direction([0, 1, 0], [0, 0, 1])", [&] { return t2::to_string(t2::direction(P(0, 1, 0), P(0, 0, 1))); });
@@ -200,6 +201,7 @@ void rectangles_and_boxes() {
           [&] { return t2::to_string(t2::ExactIsoRect(a, T1(Integer(-1), Integer(1)), T1::finite(Integer(1)))); });
   attempt("iso_rect([0, 1, 1], 1, 1)",
           [&] { return t2::to_string(t2::ExactIsoRect(P(0, 1, 1), T1::finite(Integer(1)), T1::finite(Integer(1)))); });
+  attempt("iso_rect(a, [0, 1, 0])", [&] { return t2::to_string(t2::iso_rect(a, P(0, 1, 0))); });
   attempt("iso_rect(a, antipode((1, 1)))",
           [&] { return t2::to_string(t2::iso_rect(a, t2::antipode(P::cartesian(1, 1)))); });
 
@@ -214,6 +216,9 @@ void rectangles_and_boxes() {
   attempt("b1 + b2", [&] { return t2::to_string(b1 + b2); });
   attempt("b1 + b3", [&] { return t2::to_string(b1 + b3); });
   attempt("b2 + b3", [&] { return t2::to_string(b2 + b3); });
+  attempt("bbox((0,0), back (1,1))", [] { return t2::to_string(t2::bbox({P::cartesian(0, 0), P(-1, -1, -1)})); });
+  attempt("bbox((0,0), [0, 1, 0], [0, -1, 1])",
+          [] { return t2::to_string(t2::bbox({P::cartesian(0, 0), P(0, 1, 0), P(0, -1, 1)})); });
   attempt("b1 + back", [&] { return t2::to_string(b1 + back); });
   auto meet = [](const t2::ExactBBox& x, const t2::ExactBBox& y) -> std::string {
     const auto r = t2::intersection(x, y);
