@@ -1,4 +1,4 @@
-// The figure gallery: the figures 3.1-3.12 and 4.1-4.20 of seed 000 (the T2-in-CGAL thesis)
+// The figure gallery: the figures 3.1-3.12 of seed 000 (the T2-in-CGAL thesis; 4.1-4.20 are still to do)
 // redrawn from the library. `gallery [--figures DIR]` writes figures/gallery/*.svg;
 // `gallery --markdown` prints docs/gallery.md. Scenes of points, segments and polygons are read
 // from gallery/scenes/*.scene; lines, circles and the rest are built here.
@@ -193,19 +193,6 @@ const std::vector<Entry>& entries() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1 && std::string(argv[1]) == "--markdown") {
-    std::printf("# Figure gallery\n\n");
-    std::printf("The figures 3.1–3.12 and 4.1–4.20 of the T²-in-CGAL thesis (seed 000), redrawn by the\n"
-                "library from `gallery/main.cpp` and the scene files in `gallery/scenes/`. Regenerate with\n"
-                "`build/default/bin/t2 figures`. Captions are ours; where the thesis is wrong or vague, the\n"
-                "caption says so.\n\n");
-    for (const auto& e : entries()) {
-      std::printf("## Figure %s\n\n", e.caption);
-      std::string files = e.files;
-      std::printf("![Figure %.4s](../figures/gallery/%s)\n\n", e.caption, files.c_str());
-    }
-    return 0;
-  }
   g_dir = dr::figures_dir(argc, argv, T2_FIGURES_DIR);
   for (const auto& e : entries())
     if (e.make) e.make();
