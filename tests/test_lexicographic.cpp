@@ -21,14 +21,8 @@ namespace {
 
 using testing::scale;
 
-template <class P>
-P make(long w, long x, long y) {
-  using T = typename P::Coordinate;
-  return P(T(w), T(x), T(y));
-}
-
-Rational q(const double& v) { return to_rational(v); }
-Rational q(const Integer& v) { return Rational(v); }
+using testing::make;
+using testing::q;
 
 /// Normalized coordinates, exactly: [±1, x/|w|, y/|w|] or [0, x/m, y/m], m = max(|x|, |y|).
 template <class P>

@@ -25,4 +25,16 @@ inline Rational det3_oracle(const Point& p, const Point& q, const Point& r) {
 
 inline Sign sign_oracle(const Rational& v) { return static_cast<Sign>(sgn(v)); }
 
+/// The point [w, x, y] with coordinates of P's type (Point or ExactPoint), from small integers.
+template <class P>
+P make(long w, long x, long y) {
+  using T = typename P::Coordinate;
+  return P(T(w), T(x), T(y));
+}
+
+/// The exact rational value of a coordinate of either type.
+inline Rational q(const double& v) { return to_rational(v); }
+/// The exact rational value of a coordinate of either type.
+inline Rational q(const Integer& v) { return Rational(v); }
+
 }  // namespace t2::testing
