@@ -154,7 +154,7 @@ dr::Figure sides_scene() {
   const t2::Line r = t2::join(a, b);
   f.add(r, st(kBlue).width(2).arrow().shade().label("r").label_angle(150));
   // Four test points; their captions come from the exact predicate r ⋄ p.
-  const Point pts[] = {Point(1, -2, 1.6), Point(-1, -1.2, 0.8), Point(1, 1.3, -2.2), Point(-1, 2.2, -1.6)};
+  const Point pts[] = {Point(1, -2, 1.6), Point(-1, -1.2, 0.8), Point(1, 1.3, -2.2), Point(-1, 2.7, -0.9)};
   for (const Point& p : pts) {
     const t2::Sign s = t2::side(r, p);
     const std::string text = std::string(p.w() > 0 ? "front" : "back") + ", r ⋄ p " + (s > 0 ? "> 0" : "< 0");
