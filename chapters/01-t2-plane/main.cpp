@@ -274,6 +274,5 @@ int main(int argc, char** argv) {
   orientation(dir);
   parallels(dir);
   sides(dir);
-  std::cerr << "figures written to " << dir.string() << "\n";  // stderr: stdout is the same wherever the figures go
   return 0;
 }
