@@ -1,9 +1,12 @@
-// t2 draw: a scene file drawn in the planar model, the spherical model or both.
+// t2 draw: the picture of a scene file in the planar model, the spherical model, or both.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "command.hpp"
 #include "t2/draw.hpp"
@@ -13,106 +16,137 @@
 namespace t2cli {
 namespace {
 
-const char* const kHelp =
-    "Usage: t2 draw FILE [--model plane|sphere|both] [--view LAT,LON] [--format svg|png|pdf] -o OUT\n"
-    "\n"
-    "Draws the points, segments and polygons of the scene file FILE (see the README, section\n"
-    "\"Scene files\") in the planar model of T2 (front solid and filled, back dashed and hollow,\n"
-    "Omega a ring around the view), in the spherical model (seen from latitude LAT and longitude\n"
-    "LON, degrees; default 25,-65), or both side by side (the default). The planar view is fitted\n"
-    "to the proper points of the scene. The format is taken from --format, else from the\n"
-    "extension of OUT. A bad scene file fails with file:line: message and exit status 2, and no\n"
-    "output is written; a scene that is undefined in T2 exits with status 3.\n"
-    "\n"
-    "Example: t2 draw triangle.scene --model both -o triangle.svg\n";
+namespace dr = t2::draw;
 
-const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"};
+const char* const kPointColour = "#000000";
+const char* const kSegmentColour = "#1f77b4";
+const char* const kPolygonColour = "#2ca02c";
+
+enum class Model { plane, sphere, both };
+
+Model parse_model(const std::string& s) {
+  if (s == "plane") return Model::plane;
+  if (s == "sphere") return Model::sphere;
+  if (s == "both") return Model::both;
+  throw UsageError(fmt::format("--model must be plane, sphere or both, not '{}'", s));
+}
+
+dr::Format parse_format(const std::string& s) {
+  if (s == "svg") return dr::Format::svg;
+  if (s == "png") return dr::Format::png;
+  if (s == "pdf") return dr::Format::pdf;
+  throw UsageError(fmt::format("--format must be svg, png or pdf, not '{}'", s));
+}
+
+double parse_degrees(const std::string& s, const char* what, double limit) {
+  char* end = nullptr;
+  const double d = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(d) || std::fabs(d) > limit)
+    throw UsageError(fmt::format("--view: {} must be a number of degrees in [-{}, {}], not '{}'", what,
+                                 limit, limit, s));
+  return d;
+}
+
+// The planar viewport: centred at the origin, wide enough for every finite point of the scene
+// (points at infinity sit on the Ω ring whatever the width).
+dr::PlaneView fit_plane(const t2::Scene& s) {
+  double r = 0;
+  auto see = [&](const t2::Point& p) {
+    if (p.w() == 0) return;
+    const double d = std::hypot(p.x() / p.w(), p.y() / p.w());
+    if (std::isfinite(d)) r = std::max(r, d);
+  };
+  for (const auto& p : s.points) see(p.point);
+  for (const auto& g : s.segments) {
+    see(g.a.point);
+    see(g.b.point);
+  }
+  for (const auto& g : s.polygons)
+    for (const auto& v : g.vertices) see(v.point);
+  dr::PlaneView v;
+  v.half_width = std::max(1.0, 1.2 * r);
+  return v;
+}
+
+dr::Figure figure_of(const t2::Scene& s) {
+  dr::Figure f;
+  for (const auto& g : s.polygons) {
+    std::vector<t2::Point> v;
+    for (const auto& p : g.vertices) v.push_back(p.point);
+    f.add(v, dr::Style().color(kPolygonColour).width(2).fill(kPolygonColour).layer(0));
+  }
+  for (const auto& g : s.segments) f.segment(g.a.point, g.b.point, dr::Style().color(kSegmentColour).width(2).layer(1));
+  for (const auto& p : s.points) f.add(p.point, dr::Style().color(kPointColour).label(p.label).layer(2));
+  return f;
+}
 
 int run(Args args) {
-  std::string file, out, model = "both", format;
-  t2::draw::SphereView sphere;
+  std::optional<std::string> file, output, format_name;
+  Model model = Model::both;
+  dr::SphereView sphere;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      if (i + 1 == args.size()) throw UsageError(fmt::format("{} needs a value", a));
       return args[++i];
     };
-    if (a == "--model") {
-      model = value();
-      if (model != "plane" && model != "sphere" && model != "both")
-        throw UsageError("--model must be plane, sphere or both, not '" + model + "'");
+    if (a == "-o") {
+      output = value();
+    } else if (a == "--model") {
+      model = parse_model(value());
+    } else if (a == "--format") {
+      format_name = value();
     } else if (a == "--view") {
       const std::string& v = value();
-      double lat = 0, lon = 0;
-      char comma = 0, extra = 0;
-      if (std::sscanf(v.c_str(), "%lf %c %lf %c", &lat, &comma, &lon, &extra) != 3 || comma != ',' ||
-          !std::isfinite(lat) || !std::isfinite(lon) || std::fabs(lat) > 90)
-        throw UsageError("--view wants LAT,LON in degrees with |LAT| <= 90, not '" + v + "'");
-      sphere.lat = lat;
-      sphere.lon = lon;
-    } else if (a == "--format") {
-      format = value();
-      if (format != "svg" && format != "png" && format != "pdf")
-        throw UsageError("--format must be svg, png or pdf, not '" + format + "'");
-    } else if (a == "-o" || a == "--output") {
-      out = value();
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("unknown option " + a);
-    } else if (file.empty()) {
-      file = a;
+      const auto comma = v.find(',');
+      if (comma == std::string::npos) throw UsageError(fmt::format("--view takes LAT,LON, not '{}'", v));
+      sphere.lat = parse_degrees(v.substr(0, comma), "LAT", 90);
+      sphere.lon = parse_degrees(v.substr(comma + 1), "LON", 360);
+    } else if (a.size() > 1 && a[0] == '-') {
+      throw UsageError(fmt::format("unknown option '{}'", a));
+    } else if (file) {
+      throw UsageError("give exactly one scene file");
     } else {
-      throw UsageError("one scene file only ('" + file + "', then '" + a + "')");
+      file = a;
     }
   }
-  if (file.empty()) throw UsageError("no scene file given");
-  if (out.empty()) throw UsageError("no output file given (-o OUT)");
-  const t2::draw::Format fmt = format.empty() ? t2::draw::format_of(out)
-                               : format == "png" ? t2::draw::Format::png
-                               : format == "pdf" ? t2::draw::Format::pdf
-                                                 : t2::draw::Format::svg;
-
-  const t2::Scene scene = t2::read_scene(file);  // ParseError (file:line) escapes: exit 2
-  namespace dr = t2::draw;
-  dr::Figure fig;
-  double extent = 1;  // the planar view fits every proper point
-  auto fit = [&](const t2::Point& p) {
-    if (p.w() == 0) return;
-    extent = std::max({extent, std::fabs(p.x() / p.w()), std::fabs(p.y() / p.w())});
-  };
-  int colour = 0;
-  for (const auto& poly : scene.polygons) {
-    std::vector<t2::Point> v;
-    for (const auto& p : poly.vertices) {
-      v.push_back(p.point);
-      fit(p.point);
-    }
-    const char* c = kPalette[colour++ % 6];
-    fig.add(v, dr::Style().color(c).width(1.8).fill(c).fill_opacity(0.18));
-  }
-  for (const auto& s : scene.segments) {
-    fit(s.a.point);
-    fit(s.b.point);
-    fig.segment(s.a.point, s.b.point, dr::Style().color(kPalette[colour++ % 6]).width(1.8));
-  }
-  for (const auto& p : scene.points) {
-    fit(p.point);
-    fig.add(p.point, dr::Style().label(p.label));
-  }
-  for (const auto& s : scene.segments)
-    for (const auto* p : {&s.a, &s.b})
-      if (!p->label.empty() || scene.points.empty()) fig.add(p->point, dr::Style().label(p->label).size(2.8));
-  dr::PlaneView plane;
-  plane.half_width = extent * 1.1;
+  if (!file) throw UsageError("give a scene file");
+  if (!output) throw UsageError("give the output file with -o OUT");
+  // The format first: a bad extension must not cost a parse, and must not leave a file.
+  const dr::Format fmt = format_name ? parse_format(*format_name) : dr::format_of(*output);
+  const t2::Scene scene = t2::read_scene(*file);  // ParseError: file:line: message, exit 2
+  const dr::Figure fig = figure_of(scene);
+  const dr::PlaneView plane = fit_plane(scene);
   std::string bytes;
-  if (model == "plane") bytes = dr::render(fig, plane, fmt);
-  if (model == "sphere") bytes = dr::render(fig, sphere, fmt);
-  if (model == "both") bytes = dr::render_both(fig, plane, sphere, fmt);
-  t2::write_file_atomically(out, bytes);
+  switch (model) {
+    case Model::plane: bytes = dr::render(fig, plane, fmt); break;
+    case Model::sphere: bytes = dr::render(fig, sphere, fmt); break;
+    case Model::both: bytes = dr::render_both(fig, plane, sphere, fmt); break;
+  }
+  t2::write_file_atomically(*output, bytes);
   return kOk;
 }
 
 }  // namespace
 
-T2_COMMAND({"draw", "draw a scene file in the planar and/or spherical model (SVG, PNG, PDF)", kHelp, run})
+T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model, or both",
+            "Usage: t2 draw FILE [--model plane|sphere|both] [--view LAT,LON] [--format svg|png|pdf] -o OUT\n"
+            "\n"
+            "Reads the scene file FILE (the format is described in the README, section \"Scene\n"
+            "files\") and draws its points (with their labels), segments (blue) and polygons\n"
+            "(green) following the conventions of the figures: front side solid with filled\n"
+            "markers, back side dashed with hollow markers, Ω a grey ring (planar model) or the\n"
+            "equator (spherical model).\n"
+            "\n"
+            "  --model M        plane, sphere or both side by side (default both)\n"
+            "  --view LAT,LON   direction from which the sphere is seen, degrees (default 25,-65)\n"
+            "  --format F       svg, png or pdf (default: from the extension of OUT)\n"
+            "  -o OUT           the picture; written atomically, only when everything succeeded\n"
+            "\n"
+            "The planar view is centred at the origin and wide enough for every finite point.\n"
+            "\n"
+            "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
+            "reads file:line: what is wrong; no output file is created).\n",
+            run});
 
 }  // namespace t2cli
