@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_testing.hpp"
 #include "testing.hpp"
 
 namespace t2 {
@@ -16,52 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
+using testing::has;
+using testing::Result;
+using testing::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+class CliInfo : public testing::CliTest {};
 
-class CliInfo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("t2_cli_info_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
-  // Runs `t2 <args>` in the test directory (stdin from `input`), capturing everything.
-  Result t2(const std::string& args, const std::string& input = "") {
-    const fs::path in = write(".stdin", input);
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + std::string(T2_TOOL) + "' " + args +
-                            " <.stdin >.stdout 2>.stderr";
-    const int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir_ / ".stdout");
-    r.err = slurp(dir_ / ".stderr");
-    return r;
-  }
-
-  fs::path dir_;
-};
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST_F(CliInfo, SidesNormalizedAndCartesianCoordinates) {
   write("s.t2",
