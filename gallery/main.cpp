@@ -1,52 +1,23 @@
-// The figure gallery: the figures 3.1-3.12 of seed 000 (the T2-in-CGAL thesis; 4.1-4.20 are still to do)
-// redrawn from the library. `gallery [--figures DIR]` writes figures/gallery/*.svg;
-// `gallery --markdown` prints docs/gallery.md. Scenes of points, segments and polygons are read
-// from gallery/scenes/*.scene; lines, circles and the rest are built here.
-#include <t2/scene.hpp>
-#include <t2/t2.hpp>
+// The figure gallery: the figures of seed 000 (the T2-in-CGAL thesis), chapters 3 and 4,
+// redrawn by the library. `gallery [--figures DIR]` writes figures/gallery/*.svg;
+// `gallery --markdown` prints the gallery page docs/gallery.md (a test checks that the
+// committed page is what this prints). Scenes of points, segments and polygons are read from
+// gallery/scenes/*.scene; lines, circles and the rest are built by the part files.
+#include <fmt/core.h>
 
-#include <cmath>
 #include <cstdio>
-#include <functional>
-#include <numbers>
-#include <string>
-#include <vector>
+#include <cstring>
 
-namespace dr = t2::draw;
-namespace fs = std::filesystem;
-using t2::Point;
+#include "gallery.hpp"
 
-namespace {
-
-const char* const kBlue = "#1f77b4";
-const char* const kRed = "#d62728";
-const char* const kGreen = "#2ca02c";
-const char* const kOrange = "#ff7f0e";
-const char* const kPurple = "#9467bd";
-
+namespace gallery {
 fs::path g_dir;
-fs::path g_scenes = T2_GALLERY_SCENES;
 
-dr::Style st(const char* colour) { return dr::Style().color(colour); }
-dr::Style lab(const char* colour, std::string text, double angle = std::nan("")) {
-  return dr::Style().color(colour).label(std::move(text)).label_angle(angle);
-}
+const fs::path& out_dir() { return g_dir; }
+fs::path scene_path(const std::string& file) { return fs::path(T2_GALLERY_SCENES) / file; }
 
-dr::PlaneView plane(double hw = 4) {
-  dr::PlaneView v;
-  v.half_width = hw;
-  return v;
-}
-dr::SphereView sphere(double lat = 25, double lon = -65) {
-  dr::SphereView v;
-  v.lat = lat;
-  v.lon = lon;
-  return v;
-}
-
-/// Adds the segments and polygons of a scene file, in one colour, with its labels.
 void add_scene(dr::Figure& f, const std::string& file, const char* colour) {
-  const t2::Scene s = t2::read_scene(g_scenes / file);
+  const t2::Scene s = t2::read_scene(scene_path(file));
   for (const auto& seg : s.segments) f.segment(seg.a.point, seg.b.point, st(colour).width(2));
   for (const auto& poly : s.polygons) {
     std::vector<Point> v;
@@ -56,145 +27,50 @@ void add_scene(dr::Figure& f, const std::string& file, const char* colour) {
   for (const auto& p : s.points) f.add(p.point, lab(colour, p.label));
 }
 
-// ------------------------------------------------------------------ chapter 3 of the thesis
-
-void fig_3_1() {  // T1 as a circle
-  dr::Figure f;
-  f.add(t2::T1(1, 0), lab(kBlue, "[1, 0]", -40));
-  f.add(t2::T1(1, 1), lab(kBlue, "[1, 1]", 30));
-  f.add(t2::T1(-1, -1), lab(kRed, "¬[1, 1] = [−1, −1]", 210));
-  f.add(t2::T1(-1, 0.5), lab(kRed, "[−1, 0.5]", 170));
-  dr::T1View v;
-  dr::save(f, v, g_dir / "fig-3-1-t1-circle.svg");
-}
-
-void fig_3_2() {  // T1 as two copies of the line
-  dr::Figure f;
-  f.add(t2::T1(1, 1), lab(kBlue, "[1, 1]", 90));
-  f.add(t2::T1(1, -2), lab(kBlue, "[1, −2]", 90));
-  f.add(t2::T1(-1, -1), lab(kRed, "[−1, −1]", -90));
-  f.add(t2::T1(-1, 2.5), lab(kRed, "[−1, 2.5]", -90));
-  dr::T1View v;
-  v.model = dr::T1Model::lines;
-  dr::save(f, v, g_dir / "fig-3-2-t1-lines.svg");
-}
-
-dr::Figure models_scene() {
-  dr::Figure f;
-  const Point p(1, 1.5, 1), q(-1, 2, -1.5), r(0, -1, 1);
-  f.add(p, lab(kBlue, "p = [1, 1.5, 1]", 45));
-  f.add(t2::antipode(p), lab(kRed, "¬p", -135));
-  f.add(q, lab(kRed, "q = [−1, 2, −1.5]", -45));
-  f.add(r, lab(kGreen, "r = [0, −1, 1]", 135));
-  f.add(Point(1, 0, 0), lab("#000000", "o = [1, 0, 0]", -60).marker(dr::Marker::square));
-  f.add(Point(-1, 0, 0), lab("#555555", "¬o", 120).marker(dr::Marker::square));
-  return f;
-}
-
-void fig_3_3() { dr::save(models_scene(), plane(3), g_dir / "fig-3-3-planar-model.svg"); }
-void fig_3_4() {
-  dr::SphereView v = sphere();
-  v.graticule = true;
-  dr::save(models_scene(), v, g_dir / "fig-3-4-spherical-model.svg");
-}
-
-void fig_3_5() {  // orientation: u runs from q to r, the segment pu turns about p
-  dr::Figure f;
-  const Point p(1, -2, -1), q(1, 2, -1.5), r(1, 1, 2);
-  f.segment(q, r, st(kBlue).width(2).arrow());
-  for (double t : {0.2, 0.5, 0.8}) {
-    const Point u(1, q.x() + t * (r.x() - q.x()), q.y() + t * (r.y() - q.y()));
-    f.segment(p, u, st("#999999").width(1));
+std::vector<Entry> all_entries() {
+  std::vector<Entry> all;
+  for (auto part : {thesis3, thesis4_primitives, thesis4_predicates}) {
+    auto e = part();
+    all.insert(all.end(), e.begin(), e.end());
   }
-  f.add(p, lab("#000000", "p", 180));
-  f.add(q, lab(kBlue, "q", -45));
-  f.add(r, lab(kBlue, "r", 45));
-  f.add(Point(1, 1.5, 0.25), lab(kGreen, "u", 0).size(2.5));
-  f.label(Point(1, -0.3, 1.4), "Δ(p, q, r) > 0: counter-clockwise", st(kGreen));
-  dr::PlaneView v = plane(3);
-  v.omega = false;
-  dr::save(f, v, g_dir / "fig-3-5-orientation.svg");
+  return all;
 }
 
-void fig_3_6() {  // a line on the sphere: a great circle
-  dr::Figure f;
-  const Point p(1, 1, 0), q(1, 0, 1.5);
-  f.add(t2::join(p, q), st(kBlue).width(2).arrow().label("p ∨ q"));
-  f.add(p, lab(kBlue, "p", -45));
-  f.add(q, lab(kBlue, "q", 135));
-  f.add(t2::antipode(p), lab(kRed, "¬p", 135));
-  f.add(t2::antipode(q), lab(kRed, "¬q", -45));
-  dr::save(f, sphere(), g_dir / "fig-3-6-line-sphere.svg");
-}
-
-void fig_3_7() {  // a segment on the sphere: the shorter arc
-  dr::Figure f;
-  f.add(t2::join(Point(1, 1, -0.5), Point(1, -1, 1.5)), st("#bbbbbb").width(1));
-  add_scene(f, "fig-3-7.scene", kBlue);
-  dr::save(f, sphere(), g_dir / "fig-3-7-segment-sphere.svg");
-}
-
-void fig_3_8_to_3_10() {
-  const struct {
-    const char* scene;
-    const char* out;
-  } cases[] = {{"fig-3-8.scene", "fig-3-8-segment-front.svg"},
-               {"fig-3-9.scene", "fig-3-9-segment-back.svg"},
-               {"fig-3-10.scene", "fig-3-10-segment-front-to-back.svg"}};
-  for (const auto& c : cases) {
-    dr::Figure f;
-    add_scene(f, c.scene, kBlue);
-    dr::save_both(f, plane(4), sphere(), g_dir / c.out);
+/// The gallery page (docs/gallery.md).
+std::string markdown() {
+  std::string md =
+      "# Figure gallery\n\n"
+      "<!-- Generated by `build/default/bin/gallery --markdown` from gallery/*.cpp; do not edit. -->\n\n"
+      "The figures of chapters 3 and 4 of the T²-in-CGAL thesis (seed 000): the models of T¹ and\n"
+      "T², orientation, lines, segments and the sides of a line (3.1–3.12); triangles, rectangles,\n"
+      "bounding boxes and circles, relative distances, midpoints, membership in a segment and\n"
+      "angles (4.1–4.20). Each is redrawn by the library from the programs `gallery/*.cpp` and the\n"
+      "scene files in `gallery/scenes/`; where a figure states a fact (a side, a distance, a\n"
+      "comparison), the program computes it with the library's exact predicates. The captions\n"
+      "are ours, not translations of the thesis's.\n\n"
+      "Conventions (the same in every figure of the book): the front side (w > 0) is solid with\n"
+      "filled markers, the back side (w < 0) dashed with hollow markers, so that the pictures read\n"
+      "in black and white; Ω is a grey ring around the planar model and the equator of the\n"
+      "sphere; on the sphere, what lies on the far hemisphere is dashed and faded.\n\n"
+      "Regenerate every figure with `build/default/bin/t2 figures`; `t2 figures --check` fails\n"
+      "when a committed figure differs from what the programs draw. To draw a scene file of your\n"
+      "own: `t2 draw FILE -o picture.svg` (see `t2 help draw`).\n";
+  for (const Entry& e : all_entries()) {
+    md += fmt::format("\n## Figure {}\n\n![Figure {}](../figures/gallery/{})\n\n{}\n", e.number, e.number, e.file,
+                      e.caption);
   }
+  return md;
 }
 
-dr::Figure sides_scene() {
-  dr::Figure f;
-  const Point a(1, 1, 0.5), b(1, -1, -1);
-  const t2::Line r = t2::join(a, b);
-  f.add(r, st(kBlue).width(2).arrow().shade().label("r").label_angle(150));
-  // Four test points; their captions come from the exact predicate r ⋄ p.
-  const Point pts[] = {Point(1, -2, 1.6), Point(-1, -1.2, 0.8), Point(1, 1.3, -2.2), Point(-1, 2.7, -0.9)};
-  for (const Point& p : pts) {
-    const t2::Sign s = t2::side(r, p);
-    const std::string text = std::string(p.w() > 0 ? "front" : "back") + ", r ⋄ p " + (s > 0 ? "> 0" : "< 0");
-    f.add(p, lab(s > 0 ? kGreen : kRed, text).size(3));
-  }
-  return f;
-}
-
-void fig_3_11() { dr::save(sides_scene(), plane(3), g_dir / "fig-3-11-sides-planar.svg"); }
-void fig_3_12() { dr::save(sides_scene(), sphere(), g_dir / "fig-3-12-sides-sphere.svg"); }
-
-struct Entry {
-  const char* files;    // comma separated
-  const char* caption;  // our caption
-  void (*make)();
-};
-
-const std::vector<Entry>& entries() {
-  static const std::vector<Entry> e = {
-      {"fig-3-1-t1-circle.svg", "3.1 — T¹ as the unit circle: [w, x] at the direction of (w, x); the front half (w > 0) solid, the back half dashed, ±∞ at the top and bottom.", fig_3_1},
-      {"fig-3-2-t1-lines.svg", "3.2 — T¹ as two copies of the real line (without ±∞). Drawn at x/w, the back copy is run through backwards.", fig_3_2},
-      {"fig-3-3-planar-model.svg", "3.3 — The planar (two-sided) model: front points filled, back points hollow and dashed, p and ¬p at the same spot, Ω the ring on which r = [0, −1, 1] sits at its direction.", fig_3_3},
-      {"fig-3-4-spherical-model.svg", "3.4 — The spherical model of the same points: central projection to the unit sphere, front = upper hemisphere, Ω = the equator, antipodes diametrically opposite.", fig_3_4},
-      {"fig-3-5-orientation.svg", "3.5 — Orientation: as u runs from q to r, the segment pu turns counter-clockwise about p, so Δ(p, q, r) > 0.", fig_3_5},
-      {"fig-3-6-line-sphere.svg", "3.6 — A line of T² in the spherical model: the great circle through p, q, ¬p, ¬q (arrow: its orientation).", fig_3_6},
-      {"fig-3-7-segment-sphere.svg", "3.7 — A segment in the spherical model: the shorter arc of the great circle through its endpoints.", fig_3_7},
-      {"fig-3-8-segment-front.svg", "3.8 — A segment with both endpoints on the front: the Euclidean segment (planar model, left; sphere, right).", fig_3_8_to_3_10},
-      {"fig-3-9-segment-back.svg", "3.9 — Both endpoints on the back: the Euclidean segment, dashed.", nullptr},
-      {"fig-3-10-segment-front-to-back.svg", "3.10 — From the front to the back: two half-rays, from p₀ away from ¬p₁ (solid) and from p₁ away from ¬p₀ (dashed), meeting at a point of Ω.", nullptr},
-      {"fig-3-11-sides-planar.svg", "3.11 — The two sides of a line in the planar model: the positive side is a front half-plane (shaded) plus the opposite back half-plane (hatched).", fig_3_11},
-      {"fig-3-12-sides-sphere.svg", "3.12 — The two sides of a line in the spherical model: two hemispheres (the positive one shaded).", fig_3_12},
-  };
-  return e;
-}
-
-}  // namespace
+}  // namespace gallery
 
 int main(int argc, char** argv) {
-  g_dir = dr::figures_dir(argc, argv, T2_FIGURES_DIR);
-  for (const auto& e : entries())
+  if (argc > 1 && std::strcmp(argv[1], "--markdown") == 0) {
+    std::fputs(gallery::markdown().c_str(), stdout);
+    return 0;
+  }
+  gallery::g_dir = t2::draw::figures_dir(argc, argv, T2_FIGURES_DIR);
+  for (const auto& e : gallery::all_entries())
     if (e.make) e.make();
   return 0;
 }
