@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "t2/draw/render.hpp"
 #include "t2/error.hpp"
@@ -43,6 +44,52 @@ std::vector<Vec3> slerp_samples(const Vec3& a, const Vec3& b) {
     out.push_back(plus(scaled(a, std::cos(t)), scaled(perp, std::sin(t))));
   }
   out.push_back(b);
+  return out;
+}
+
+/// The dense closed loop of unit vectors along a closed chain of T² segments.
+std::vector<Vec3> dense_loop(const std::vector<Point>& pts) {
+  std::vector<Vec3> dense;
+  const std::size_t n = pts.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    auto s = slerp_samples(on_sphere(pts[i]), on_sphere(pts[(i + 1) % n]));
+    dense.insert(dense.end(), s.begin(), s.end() - 1);
+  }
+  return dense;
+}
+
+/// The part of the region bounded by `loop` that lies on the side s · axis ≥ 0, as a closed
+/// loop: the loop where it is on that side, and between the point E where it leaves and the
+/// point F where it comes back, the shorter arc from E to F of the great circle ⟂ axis. That
+/// is exact for the regions drawn here (convex, less than a hemisphere: such a region meets a
+/// great circle in one arc shorter than a half circle). Empty when no point of the loop is
+/// strictly on that side (a region of less than a hemisphere bounded there has no part on it).
+/// Projected by a map that is one-to-one on that hemisphere (orthographic from `axis`, or
+/// central for the planar model), the result bounds the visible part.
+std::vector<Vec3> clip_to_hemisphere(const std::vector<Vec3>& loop, const Vec3& axis) {
+  std::vector<Vec3> out;
+  const std::size_t n = loop.size();
+  std::size_t start = n;
+  for (std::size_t i = 0; i < n && start == n; ++i)
+    if (dot(loop[i], axis) > 0) start = i;
+  if (start == n) return out;
+  auto crossing = [&](const Vec3& a, const Vec3& b) {
+    const double da = std::fabs(dot(a, axis)), db = std::fabs(dot(b, axis));
+    return unit(plus(scaled(a, db), scaled(b, da)));
+  };
+  std::optional<Vec3> exit;  // set while the loop is on the other side
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 &a = loop[(start + k) % n], &b = loop[(start + k + 1) % n];
+    const bool in_a = dot(a, axis) >= 0, in_b = dot(b, axis) >= 0;
+    if (in_a) out.push_back(a);
+    if (in_a && !in_b) exit = crossing(a, b);
+    if (!in_a && in_b) {
+      const Vec3 entry = crossing(a, b);
+      const auto arc = slerp_samples(*exit, entry);  // along the great circle ⟂ axis
+      out.insert(out.end(), arc.begin(), arc.end());
+      exit.reset();
+    }
+  }
   return out;
 }
 
@@ -331,6 +378,7 @@ struct PlanePainter {
       Style thick = st;
       thick.width(st.width() + 1.2);
       c.path(disk_polygon(PlaneView::ring), Part::infinity, thick, true);
+      if (!st.label().empty()) labels.push_back({c.px(PlaneView::ring * V2{std::cos(-0.3 * kPi), std::sin(-0.3 * kPi)}), &st});
       return;
     }
     const double m = std::hypot(X, Y);
@@ -366,6 +414,8 @@ struct PlanePainter {
         for (const auto& p : pts) poly.push_back(at(p));
         poly = clip_poly_disk(poly);
         if (poly.size() > 2) c.fill(poly, all_front ? Part::front : Part::back, st.fill(), st.fill_opacity(), all_back);
+      } else {
+        region(dense_loop(pts), st);
       }
     }
     for (std::size_t i = 0; i + 1 < n; ++i) arc(pts[i], pts[i + 1], st, st.arrow() && i + 2 == n && !closed);
@@ -376,6 +426,57 @@ struct PlanePainter {
     const V2 q = at(p);
     if (norm2(q) > 1.3) return;
     labels.push_back({c.px(q), &st});
+  }
+
+  /// Fills a region of T² given by its dense boundary loop: its front part solid, its back
+  /// part hatched (each clipped to the shown disk; Ω is pushed far out, beyond the disk).
+  void region(const std::vector<Vec3>& loop, const Style& st) {
+    for (const double s : {1.0, -1.0}) {
+      std::vector<V2> poly;
+      for (const Vec3& p : clip_to_hemisphere(loop, {0, 0, s})) {
+        const double w = s > 0 ? std::max(p.z, 1e-9) : std::min(p.z, -1e-9);
+        const Vec2 q = v.to_unit(p.x / w, p.y / w);
+        poly.push_back({q.u, q.v});
+      }
+      poly = clip_poly_disk(poly);
+      if (poly.size() > 2)
+        c.fill(poly, s > 0 ? Part::front : Part::back, st.fill(), s > 0 ? st.fill_opacity() : std::min(1.0, st.fill_opacity() * 2.5), s < 0);
+    }
+  }
+
+  /// A circle of finite or beyond-infinity radius: the dense loop `pts`, all on one side.
+  void circle(const std::vector<Point>& pts, const Style& st) {
+    const Part part = part_of(pts[0].w());
+    std::vector<V2> q;
+    for (const auto& p : pts) q.push_back(at(p));
+    if (!st.fill().empty()) {
+      const auto poly = clip_poly_disk(q);
+      if (poly.size() > 2) c.fill(poly, part, st.fill(), part == Part::back ? std::min(1.0, st.fill_opacity() * 2.5) : st.fill_opacity(), part == Part::back);
+    }
+    // The stroke: the runs of the loop inside the shown disk, cut exactly at its edge.
+    const std::size_t n = q.size();
+    std::size_t start = 0;
+    while (start < n && norm2(q[start]) <= 1) ++start;
+    if (start == n) {
+      c.path(q, part, st, true);
+    } else {
+      std::vector<V2> run;
+      for (std::size_t k = 1; k <= n; ++k) {
+        const V2 a = q[(start + k - 1) % n], b = q[(start + k) % n];
+        V2 u, w;
+        if (!clip_disk(a, b - a, 0, 1, u, w)) continue;
+        if (!run.empty() && norm2(run.back() - u) > 1e-12) {
+          c.path(run, part, st);
+          run.clear();
+        }
+        if (run.empty()) run.push_back(u);
+        run.push_back(w);
+      }
+      if (run.size() > 1) c.path(run, part, st);
+    }
+    const std::size_t k = n / 4;
+    if (st.arrow() && norm2(q[k]) <= 1) c.arrowhead(q[k], q[k] - q[k - 1], st, part, part == Part::back);
+    if (!st.label().empty() && norm2(q[n / 8]) <= 1) labels.push_back({c.px(q[n / 8]), &st});
   }
 };
 
@@ -466,6 +567,29 @@ struct SpherePainter {
     return out;
   }
 
+  /// Fills the visible part of a region given by its dense boundary loop (the hidden part
+  /// of the boundary is replaced by the limb).
+  void region(const std::vector<Vec3>& loop, const Style& st) {
+    std::vector<V2> poly;
+    for (const Vec3& s : clip_to_hemisphere(loop, v.eye())) poly.push_back(proj(s));
+    if (poly.size() > 2) c.fill(poly, Part::front, st.fill(), st.fill_opacity(), false);
+  }
+
+  /// A circle of finite or beyond-infinity radius: the dense loop `pts`, all on one side.
+  void circle(const std::vector<Point>& pts, const Style& st) {
+    std::vector<Vec3> loop;
+    for (const auto& p : pts) loop.push_back(to3(p));
+    if (!st.fill().empty()) region(loop, st);
+    this->loop(loop, st, part_of(pts[0].w()));
+    const std::size_t k = loop.size() / 4;
+    if (st.arrow()) {
+      const bool vis = v.depth(loop[k]) > 0;
+      c.arrowhead(proj(loop[k]), proj(loop[k]) - proj(loop[k - 1]), st, part_of(pts[0].w()), !vis);
+      if (!vis) c.shapes.back().opacity = 0.45;
+    }
+    if (!st.label().empty()) labels.push_back({c.px(proj(loop[loop.size() / 8])), &st});
+  }
+
   void point(const Point& p, const Style& st) {
     const Vec3 s = to3(p);
     Shape& m = c.marker(proj(s), part_of(p.w()), st, p.w() < 0);
@@ -518,18 +642,7 @@ struct SpherePainter {
 
   void polygon(const std::vector<Point>& pts, const Style& st, bool closed) {
     const std::size_t n = pts.size();
-    if (closed && !st.fill().empty() && n >= 3) {
-      std::vector<Vec3> dense;
-      for (std::size_t i = 0; i < n; ++i) {
-        auto s = slerp_samples(to3(pts[i]), to3(pts[(i + 1) % n]));
-        dense.insert(dense.end(), s.begin(), s.end() - 1);
-      }
-      if (std::all_of(dense.begin(), dense.end(), [&](const Vec3& s) { return v.depth(s) >= 0; })) {
-        std::vector<V2> poly;
-        for (const auto& s : dense) poly.push_back(proj(s));
-        c.fill(poly, Part::front, st.fill(), st.fill_opacity(), false);
-      }
-    }
+    if (closed && !st.fill().empty() && n >= 3) region(dense_loop(pts), st);
     for (std::size_t i = 0; i + 1 < n; ++i) arc(pts[i], pts[i + 1], st, st.arrow() && i + 2 == n && !closed);
     if (closed && n > 2) arc(pts[n - 1], pts[0], st, false);
   }
@@ -686,6 +799,7 @@ std::vector<Shape> display_list(const Figure& f, const PlaneView& v) {
         break;
       case ItemKind::polygon: pp.polygon(it->points, st, true); break;
       case ItemKind::polyline: pp.polygon(it->points, st, false); break;
+      case ItemKind::circle: pp.circle(it->points, st); break;
       case ItemKind::label: {
         const V2 q = pp.at(it->points[0]);
         if (norm2(q) <= 1.3) c.label(c.px(q), it->text, st.label_angle(), 2, st.color());
@@ -754,6 +868,7 @@ std::vector<Shape> display_list(const Figure& f, const SphereView& v) {
         break;
       case ItemKind::polygon: sp.polygon(it->points, st, true); break;
       case ItemKind::polyline: sp.polygon(it->points, st, false); break;
+      case ItemKind::circle: sp.circle(it->points, st); break;
       case ItemKind::label:
         c.label(c.px(sp.proj(on_sphere(it->points[0]))), it->text, st.label_angle(), 2, st.color());
         break;

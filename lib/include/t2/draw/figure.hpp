@@ -12,10 +12,16 @@
 #include <type_traits>
 #include <vector>
 
+#include "t2/bbox.hpp"
+#include "t2/circle.hpp"
 #include "t2/draw/style.hpp"
+#include "t2/isorect.hpp"
 #include "t2/line.hpp"
 #include "t2/point.hpp"
+#include "t2/ray.hpp"
+#include "t2/segment.hpp"
 #include "t2/t1.hpp"
+#include "t2/triangle.hpp"
 
 namespace t2::draw {
 
@@ -28,6 +34,8 @@ enum class ItemKind {
   polyline,  ///< open chain of segments through `points`
   label,     ///< `text` placed next to `points[0]`
   t1,        ///< a point of T¹ (`t1w`, `t1x`), drawn only by `T1View`
+  circle,    ///< a circle of finite or beyond-infinity radius: the closed loop `points`, all on
+             ///< one side, sampled in the circle's orientation (starting at its boundary point)
 };
 
 /// One styled item of a figure (see `Figure` for how to make them).
@@ -61,6 +69,15 @@ Line as_double(const BasicLine<T>& l) {
     return Line(p.w(), p.x(), p.y());
   }
 }
+/// The vertices of a closed chain without consecutive repeats (cyclically).
+template <class T>
+std::vector<BasicPoint<T>> distinct_cycle(std::vector<BasicPoint<T>> v) {
+  std::vector<BasicPoint<T>> out;
+  for (auto& p : v)
+    if (out.empty() || !(out.back() == p)) out.push_back(std::move(p));
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out;
+}
 }  // namespace detail
 
 /// An ordered list of styled items. Items are drawn by layer, then in the order added.
@@ -88,6 +105,50 @@ class Figure {
     std::vector<Point> v;
     for (const auto& p : vertices) v.push_back(detail::as_double(p));
     return push(ItemKind::polygon, std::move(v), std::move(s));
+  }
+  /// Adds the segment of T² s (as `segment(s.source(), s.target())`).
+  template <class T>
+  Figure& add(const BasicSegment<T>& s, Style st = {}) {
+    return segment(s.source(), s.target(), std::move(st));
+  }
+  /// Adds a ray: the segment from its source to its point at infinity.
+  template <class T>
+  Figure& add(const BasicRay<T>& r, Style st = {}) {
+    return segment(r.source(), r.target(), std::move(st));
+  }
+  /// Adds a triangle as the polygon of its three vertices (`Style::fill` shades its interior,
+  /// on both sides of T² when it crosses Ω).
+  template <class T>
+  Figure& add(const BasicTriangle<T>& t, Style s = {}) {
+    return add(std::vector<BasicPoint<T>>{t.vertex(0), t.vertex(1), t.vertex(2)}, std::move(s));
+  }
+  /// Adds an iso-rectangle as the polygon of its vertices in its orientation (repeated
+  /// vertices of a degenerate or unbounded rectangle are drawn once).
+  template <class T>
+  Figure& add(const BasicIsoRect<T>& r, Style s = {}) {
+    return add(detail::distinct_cycle<T>({r.vertex(0), r.vertex(1), r.vertex(2), r.vertex(3)}), std::move(s));
+  }
+  /// Adds a bounding box as the polygon a, b, c, d (an unbounded box closes along Ω).
+  template <class T>
+  Figure& add(const BasicBBox<T>& b, Style s = {}) {
+    return add(detail::distinct_cycle<T>({b.vertex(0), b.vertex(1), b.vertex(2), b.vertex(3)}), std::move(s));
+  }
+  /// Adds a circle of T² of any radius kind (circle.hpp, seed 000 §4.1.9):
+  /// - finite radius: the Euclidean circle on the side of its centre;
+  /// - beyond infinity: the points of the *other* side at the same Cartesian distance (drawn
+  ///   dashed around the spot of the centre in the planar model, around ¬c on the sphere);
+  /// - infinite, centre on Ω: the line through the boundary point perpendicular to the
+  ///   centre's direction; infinite around a proper centre: Ω itself.
+  ///
+  /// It is traversed in its orientation (POSITIVE: counter-clockwise in T², which on the back
+  /// side is clockwise as drawn), shown by `Style::arrow`. `Style::fill` shades the region the
+  /// circle bounds on its own side: the disk of a finite circle; for a beyond-infinity circle
+  /// the back disk around ¬c, i.e. the points *farther* from c than the circle; for an infinite
+  /// one the half-plane or hemisphere holding the centre.
+  template <class T>
+  Figure& add(const BasicCircle<T>& c, Style s = {}) {
+    return add_circle(detail::as_double(c.center()), detail::as_double(c.boundary_point()), c.orientation(),
+                      std::move(s));
   }
   /// Adds a point of T¹ (drawn only by `T1View`: on the circle model or on the two lines).
   template <class T>
@@ -147,6 +208,7 @@ class Figure {
 
  private:
   Figure& push(ItemKind k, std::vector<Point> pts, Style s);
+  Figure& add_circle(const Point& c, const Point& p, Sign orientation, Style s);
   std::vector<Item> items_;
   std::string title_;
 };
