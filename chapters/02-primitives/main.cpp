@@ -7,6 +7,7 @@
 // --figures DIR. Deterministic: nothing printed depends on the figures directory.
 #include <t2/t2.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -324,8 +325,7 @@ void maps() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figures. The drawing API has no circle item, so circles get no figure (a polygon that
-// approximates a circle would be a picture of a different primitive).
+// Figures.
 
 void figures(const std::filesystem::path& dir) {
   dr::PlaneView plane;
@@ -372,7 +372,32 @@ void figures(const std::filesystem::path& dir) {
     facing.lon = 60;
     written += dr::save(f, facing, dir / "quadrant-sphere.svg");
   }
-  std::cout << "figures: 6 (segments, triangle, quadrant; plane and sphere)\n";
+  {  // The radius kinds: finite, beyond infinity (same spot, other side), infinite (a line).
+    const P c = P::cartesian(1, 1);
+    const t2::ExactCircle finite(c, P::cartesian(3, 1));           // radius 2
+    const t2::ExactCircle beyond(c, P(-1, -4, -1));                // back (4, 1): 3 from c
+    const t2::ExactCircle line(P(0, 1, 1), P::cartesian(-2, 0));   // centre at infinity
+    // Label directions suit the planar picture; on the sphere they are chosen automatically.
+    auto circles = [&](bool planar) {
+      const double auto_angle = std::nan("");
+      dr::Figure f;
+      f.add(finite, dr::Style().color("#1f77b4").width(2).fill("#9ecae1").arrow().label("finite"));
+      f.add(beyond, dr::Style().color("#d62728").width(2).arrow().label("beyond infinity")
+                        .label_angle(planar ? -20 : auto_angle));
+      f.add(line, dr::Style().color("#2ca02c").width(2).arrow().label("infinite").label_angle(planar ? -45 : auto_angle));
+      f.add(c, dr::Style().label("c").label_angle(-90));
+      f.add(line.center(), dr::Style().color("#2ca02c").label("centre of the line").label_angle(planar ? 200 : auto_angle));
+      return f;
+    };
+    dr::PlaneView wide = plane;
+    wide.half_width = 5;
+    written += dr::save(circles(true), wide, dir / "circles-plane.svg");
+    dr::SphereView view = sphere;  // c (at longitude 45) in view, ¬c and the back circle below
+    view.lat = 20;
+    view.lon = -5;
+    written += dr::save(circles(false), view, dir / "circles-sphere.svg");
+  }
+  std::cout << "figures: 8 (segments, triangle, quadrant, circles; plane and sphere)\n";
   std::cerr << written << " figure file(s) rewritten\n";  // depends on the directory: not stdout
 }
 
