@@ -294,5 +294,30 @@ TEST(DrawPrimitives, SegmentsRaysTrianglesRectanglesAndBoxesAreTheirPolygons) {
   EXPECT_EQ(e.items()[4].points.size(), 4u);
 }
 
+TEST(DrawTitle, ATitleGetsItsOwnBandAboveThePicture) {
+  dr::Figure f;
+  f.add(Line(1, 0, 0), ink());  // Ω: the ring reaches the top of the planar picture
+  f.add(Point(1, 0, 3.9), ink());
+  f.title("a title");
+  for (int model = 0; model < 2; ++model) {
+    const auto list = model == 0 ? dr::display_list(f, dr::PlaneView()) : dr::display_list(f, dr::SphereView());
+    int titles = 0;
+    for (const auto& s : list)
+      for (const auto& p : s.pts) {
+        if (s.kind == dr::ShapeKind::text && s.text == "a title") {
+          ++titles;
+          EXPECT_LT(p.y, dr::title_band);
+        } else {
+          EXPECT_GE(p.y, dr::title_band - 1e-9) << "model " << model;  // below the band
+        }
+      }
+    EXPECT_EQ(titles, 1);
+  }
+  const std::string svg = dr::render(f, dr::PlaneView());
+  EXPECT_NE(svg.find("height=\"384px\""), std::string::npos);  // 360 + 24
+  dr::Figure untitled;
+  EXPECT_NE(dr::render(untitled, dr::PlaneView()).find("height=\"360px\""), std::string::npos);
+}
+
 }  // namespace
 }  // namespace t2

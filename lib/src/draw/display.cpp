@@ -759,6 +759,14 @@ void place_labels(Canvas& c) {
   c.pending.clear();
 }
 
+/// Moves the picture down by `title_band` and writes the title in the band above it.
+void add_title(Canvas& c, const Figure& f, double width) {
+  if (f.title().empty()) return;
+  for (Shape& s : c.shapes)
+    for (Pixel& p : s.pts) p.y += title_band;
+  c.text({width / 2.0, title_band / 2}, f.title(), 0, 0, "#000000", 14).halign = 0;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- public entry points
@@ -810,7 +818,7 @@ std::vector<Shape> display_list(const Figure& f, const PlaneView& v) {
   }
   draw_labels(c, pp.labels);
   place_labels(c);
-  if (!f.title().empty()) c.text({v.size / 2.0, 14}, f.title(), 0, 0, "#000000", 14).halign = 0;
+  add_title(c, f, v.size);
   return c.shapes;
 }
 
@@ -877,7 +885,7 @@ std::vector<Shape> display_list(const Figure& f, const SphereView& v) {
   }
   draw_labels(c, sp.labels);
   place_labels(c);
-  if (!f.title().empty()) c.text({v.size / 2.0, 14}, f.title(), 0, 0, "#000000", 14).halign = 0;
+  add_title(c, f, v.size);
   return c.shapes;
 }
 

@@ -213,11 +213,15 @@ Format format_of(const std::filesystem::path& path) {
   throw BadInput("cannot tell the format of '" + path.string() + "': use .svg, .png or .pdf");
 }
 
+namespace {
+double band(const Figure& f) { return f.title().empty() ? 0 : title_band; }
+}  // namespace
+
 std::string render(const Figure& f, const PlaneView& v, Format fmt) {
-  return paint_all({{display_list(f, v), 0, double(v.size)}}, v.size, v.size, fmt);
+  return paint_all({{display_list(f, v), 0, double(v.size)}}, v.size, v.size + band(f), fmt);
 }
 std::string render(const Figure& f, const SphereView& v, Format fmt) {
-  return paint_all({{display_list(f, v), 0, double(v.size)}}, v.size, v.size, fmt);
+  return paint_all({{display_list(f, v), 0, double(v.size)}}, v.size, v.size + band(f), fmt);
 }
 std::string render(const Figure& f, const T1View& v, Format fmt) {
   const double h = v.model == T1Model::circle ? v.size : v.size * 0.5;
@@ -226,7 +230,7 @@ std::string render(const Figure& f, const T1View& v, Format fmt) {
 std::string render_both(const Figure& f, const PlaneView& plane, const SphereView& sphere, Format fmt) {
   return paint_all({{display_list(f, plane), 0, double(plane.size)}, {display_list(f, sphere), double(plane.size), double(sphere.size)}},
                    plane.size + sphere.size,
-                   std::max(plane.size, sphere.size), fmt);
+                   std::max(plane.size, sphere.size) + band(f), fmt);
 }
 
 bool save(const Figure& f, const PlaneView& v, const std::filesystem::path& path) {

@@ -61,6 +61,10 @@ struct Shape {
   int halign = 0;                    ///< text: -1 left edge at the point, 0 centred, 1 right
 };
 
+/// Height in pixels of the band above the picture that holds a figure's title (a figure with
+/// a title is that much taller, so the title never covers the Ω ring or the sphere).
+inline constexpr double title_band = 24;
+
 /// The drawing commands of a figure in the planar model.
 std::vector<Shape> display_list(const Figure& f, const PlaneView& v);
 /// The drawing commands of a figure in the spherical model.
