@@ -58,6 +58,13 @@ std::vector<Vec3> dense_loop(const std::vector<Point>& pts) {
   return dense;
 }
 
+/// The point where the short arc from a to b crosses the great circle ⟂ axis, for a and b on
+/// different sides of it (interpolated: a and b are samples a degree or two apart).
+Vec3 crossing(const Vec3& a, const Vec3& b, const Vec3& axis) {
+  const double da = std::fabs(dot(a, axis)), db = std::fabs(dot(b, axis));
+  return unit(plus(scaled(a, db), scaled(b, da)));
+}
+
 /// The part of the region bounded by `loop` that lies on the side s · axis ≥ 0, as a closed
 /// loop: the loop where it is on that side, and between the point E where it leaves and the
 /// point F where it comes back, the shorter arc from E to F of the great circle ⟂ axis. That
@@ -73,18 +80,14 @@ std::vector<Vec3> clip_to_hemisphere(const std::vector<Vec3>& loop, const Vec3& 
   for (std::size_t i = 0; i < n && start == n; ++i)
     if (dot(loop[i], axis) > 0) start = i;
   if (start == n) return out;
-  auto crossing = [&](const Vec3& a, const Vec3& b) {
-    const double da = std::fabs(dot(a, axis)), db = std::fabs(dot(b, axis));
-    return unit(plus(scaled(a, db), scaled(b, da)));
-  };
   std::optional<Vec3> exit;  // set while the loop is on the other side
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3 &a = loop[(start + k) % n], &b = loop[(start + k + 1) % n];
     const bool in_a = dot(a, axis) >= 0, in_b = dot(b, axis) >= 0;
     if (in_a) out.push_back(a);
-    if (in_a && !in_b) exit = crossing(a, b);
+    if (in_a && !in_b) exit = crossing(a, b, axis);
     if (!in_a && in_b) {
-      const Vec3 entry = crossing(a, b);
+      const Vec3 entry = crossing(a, b, axis);
       const auto arc = slerp_samples(*exit, entry);  // along the great circle ⟂ axis
       out.insert(out.end(), arc.begin(), arc.end());
       exit.reset();
@@ -258,6 +261,10 @@ Canvas make_canvas(double ox, double oy, double scale) {
   return c;
 }
 
+/// Opacity of a hatched (back side) fill: hatching lines cover less than a flat fill, so they
+/// are drawn stronger.
+double back_opacity(const Style& st) { return std::min(1.0, st.fill_opacity() * 2.5); }
+
 Part part_of(double w) { return w > 0 ? Part::front : (w < 0 ? Part::back : Part::infinity); }
 
 std::vector<const Item*> by_layer(const Figure& f) {
@@ -371,7 +378,7 @@ struct PlanePainter {
         auto front = clip_half(disk_polygon(), k, n);
         if (front.size() > 2) c.fill(front, Part::front, col, st.fill_opacity(), false);
         auto back = clip_half(disk_polygon(), -k, -1.0 * n);
-        if (back.size() > 2) c.fill(back, Part::back, col, std::min(1.0, st.fill_opacity() * 2.5), true);
+        if (back.size() > 2) c.fill(back, Part::back, col, back_opacity(st), true);
       }
     }
     if (X == 0 && Y == 0) {  // Ω itself
@@ -412,8 +419,7 @@ struct PlanePainter {
       if (all_front || all_back) {
         std::vector<V2> poly;
         for (const auto& p : pts) poly.push_back(at(p));
-        poly = clip_poly_disk(poly);
-        if (poly.size() > 2) c.fill(poly, all_front ? Part::front : Part::back, st.fill(), st.fill_opacity(), all_back);
+        fill_side(std::move(poly), all_front ? Part::front : Part::back, st);
       } else {
         region(dense_loop(pts), st);
       }
@@ -438,10 +444,16 @@ struct PlanePainter {
         const Vec2 q = v.to_unit(p.x / w, p.y / w);
         poly.push_back({q.u, q.v});
       }
-      poly = clip_poly_disk(poly);
-      if (poly.size() > 2)
-        c.fill(poly, s > 0 ? Part::front : Part::back, st.fill(), s > 0 ? st.fill_opacity() : std::min(1.0, st.fill_opacity() * 2.5), s < 0);
+      fill_side(std::move(poly), s > 0 ? Part::front : Part::back, st);
     }
+  }
+
+  /// Fills the part of a polygon (unit coordinates) inside the shown disk: solid on the
+  /// front, hatched on the back.
+  void fill_side(std::vector<V2> poly, Part part, const Style& st) {
+    poly = clip_poly_disk(std::move(poly));
+    if (poly.size() > 2)
+      c.fill(poly, part, st.fill(), part == Part::back ? back_opacity(st) : st.fill_opacity(), part == Part::back);
   }
 
   /// A circle of finite or beyond-infinity radius: the dense loop `pts`, all on one side.
@@ -449,10 +461,7 @@ struct PlanePainter {
     const Part part = part_of(pts[0].w());
     std::vector<V2> q;
     for (const auto& p : pts) q.push_back(at(p));
-    if (!st.fill().empty()) {
-      const auto poly = clip_poly_disk(q);
-      if (poly.size() > 2) c.fill(poly, part, st.fill(), part == Part::back ? std::min(1.0, st.fill_opacity() * 2.5) : st.fill_opacity(), part == Part::back);
-    }
+    if (!st.fill().empty()) fill_side(q, part, st);
     // The stroke: the runs of the loop inside the shown disk, cut exactly at its edge.
     const std::size_t n = q.size();
     std::size_t start = 0;
@@ -542,8 +551,7 @@ struct SpherePainter {
     for (std::size_t k = 0; k <= n; ++k) {
       const Vec3& s = pts[(start + k) % n];
       if (!cur.empty() && (v.depth(s) > 0) != (v.depth(cur.back()) > 0)) {
-        const double da = std::fabs(v.depth(cur.back())), db = std::fabs(v.depth(s));
-        const Vec3 x = unit(plus(scaled(cur.back(), db), scaled(s, da)));
+        const Vec3 x = crossing(cur.back(), s, v.eye());
         cur.push_back(x);
         run(cur, v.depth(cur[cur.size() / 2]) > 0, part, st);
         cur = {x};
