@@ -13,11 +13,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const t2::Scene s = t2::parse_scene(text, "fuzz");
-    // Every accepted point is a point of T2, every segment has non-antipodal endpoints.
+    // Every accepted point is a point of T2, every segment has non-antipodal endpoints, every
+    // line and circle is defined (an exception from join or Circle escapes and is reported).
     for (const auto& g : s.segments)
       if (g.b.point == t2::antipode(g.a.point)) std::abort();
     for (const auto& p : s.polygons)
       if (p.vertices.size() < 3) std::abort();
+    // Every line and circle block builds its object without throwing.
+    for (const auto& l : s.lines) (void)l.join();
+    for (const auto& c : s.circles) (void)c.circle();
   } catch (const t2::ParseError& e) {
     const std::string prefix = "fuzz:" + std::to_string(e.line()) + ": ";
     if (e.line() < 1 || std::string_view(e.what()).substr(0, prefix.size()) != prefix) std::abort();

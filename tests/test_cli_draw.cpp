@@ -102,6 +102,42 @@ TEST_F(CliDraw, ABadSceneExitsTwoWithFileAndLineAndWritesNothing) {
   EXPECT_EQ(files(), (std::vector<std::string>{"bad.t2", "bad2.t2"}));
 }
 
+TEST_F(CliDraw, LinesAndCirclesOfEveryRadiusKindAreDrawn) {
+  const std::string scene = "'" + (kExamples / "circles.t2").string() + "'";
+  ASSERT_EQ(t2("draw " + scene + " --model plane -o all.svg").status, 0);
+  // Each block adds to the picture: without it the drawing differs.
+  const std::string text = slurp(kExamples / "circles.t2");
+  for (const char* block : {"circle", "line"}) {
+    const auto at = text.rfind(std::string("\n") + block + " ");
+    ASSERT_NE(at, std::string::npos) << block;
+    const auto end = text.find("end\n", at);
+    write("less.t2", text.substr(0, at + 1) + text.substr(end + 4));
+    const Result r = t2("draw less.t2 --model plane -o less.svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir_ / "less.svg"), slurp(dir_ / "all.svg")) << block;
+  }
+  // The scene holds what the example says, and its circles are stroked in the tool's red.
+  const Scene s = read_scene(kExamples / "circles.t2");
+  ASSERT_EQ(s.circles.size(), 3u);
+  ASSERT_EQ(s.lines.size(), 1u);
+  EXPECT_TRUE(has(slurp(dir_ / "all.svg"), "stroke:rgb(83.921569%,15.294118%,15.686275%)"));  // #d62728
+}
+
+TEST_F(CliDraw, FarPointsAreDrawnAndHugeCirclesAreRefusedWithTheirLine) {
+  // A proper point beyond 1e308 from the origin: drawn like the point at infinity in its direction.
+  write("far.t2", "segment\n1e-300 1e300 1e300\n1 1e300 -1e300\nend\n1e-300 1e300 1e300\n");
+  for (const char* m : {"plane", "sphere"}) {
+    const Result r = t2(std::string("draw far.t2 --model ") + m + " -o far.svg");
+    EXPECT_EQ(r.status, 0) << m << ": " << r.err;
+  }
+  write("huge.t2", "1 1\n\ncircle\n1e-300 1e300 1e300\n1 1e300 -1e300\nend\n");
+  const Result r = t2("draw huge.t2 -o huge.svg");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.err.starts_with("huge.t2:3: ")) << r.err;
+  EXPECT_TRUE(has(r.err, "beyond the range of double")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "huge.svg"));
+}
+
 TEST_F(CliDraw, BadUsageExitsTwoAndWritesNothing) {
   write("s.t2", "1 2\n");
   for (const char* args : {"draw", "draw s.t2", "draw s.t2 -o", "draw s.t2 -o a.jpg", "draw s.t2 --format gif -o a.svg",

@@ -143,7 +143,7 @@ TEST_F(CliInfo, BadScenesExitTwoWithFileAndLine) {
       {"1 2\n0 0 0\n", "bad.t2:2: ", "[0,0,0] is not a point of T2"},
       {"1 2 3 4\n", "bad.t2:1: ", "found 4"},
       {"1\r\n2\r\n", "bad.t2:1: ", "found 1"},
-      {"circle 1 2\n", "bad.t2:1: ", "unknown keyword 'circle'"},
+      {"ellipse 1 2\n", "bad.t2:1: ", "unknown keyword 'ellipse'"},
       {"segment\n1 2\n-1 -1 -2\nend\n", "bad.t2:3: ", "segment(p, q) is undefined when q = antipode(p)"},
       {"\npolygon\n0 0\n", "bad.t2:2: ", "'end' is missing"},
   };

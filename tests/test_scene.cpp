@@ -305,7 +305,7 @@ TEST(Scene, WrongFieldCountsAndTheNullTriple) {
 TEST(Scene, KeywordErrors) {
   expect_error("1 2\nfoo 1 2\n", 2, "unknown keyword 'foo'");
   expect_error("Segment\n", 1, "unknown keyword 'Segment'");
-  expect_error("end\n", 1, "'end' without an open 'segment' or 'polygon' block");
+  expect_error("end\n", 1, "'end' without an open block (segment, polygon, line or circle)");
   expect_error("segment 1 2\n", 1, "'segment' stands alone on its line, found '1' after it");
   expect_error("polygon\n0 0\n1 0\n0 1\nend now\n", 5, "'end' stands alone on its line");
   expect_error("segment\n0 0\npolygon\n", 3, "'polygon' inside the 'segment' block opened on line 1");
@@ -335,6 +335,45 @@ TEST(Scene, BlockCountsAndUnterminatedBlocks) {
   expect_error("polygon\n1 2\n3 4\nend\n", 4, "a polygon has at least 3 vertices, this one has 2");
   expect_error("1 2\nsegment\n1 2\n3 4\n", 2, "'segment' block is not closed: 'end' is missing");
   expect_error("polygon\n1 2\n3 4\n5 6\n# end\n", 1, "'polygon' block is not closed");
+}
+
+TEST(Scene, LinesAndCircles) {
+  const Scene s = parse_scene(
+      "label c 1 1\n"
+      "line\n  0 0\n  c\nend\n"
+      "circle\n  c\n  3 1\nend\n"
+      "circle   # centre at infinity: a line\n  0 0 1\n  2 0\nend\n"
+      "circle   # through a point of Omega: Omega itself\n  c\n  0 1 0\nend\n",
+      "lc");
+  ASSERT_EQ(s.lines.size(), 1u);
+  ASSERT_EQ(s.circles.size(), 3u);
+  EXPECT_EQ(s.lines[0].line, 2);
+  EXPECT_EQ(s.lines[0].b.label, "c");
+  const Line l = s.lines[0].join();  // through (0, 0) and (1, 1), oriented from the first
+  EXPECT_EQ(side(l, Point(1, 0, 0)), ZERO);
+  EXPECT_EQ(side(l, Point(1, 1, 1)), ZERO);
+  EXPECT_EQ(side(l, Point(1, 0, 1)), POSITIVE);  // (0, 1) is to the left of (0,0) -> (1,1)
+  EXPECT_EQ(s.circles[0].line, 6);
+  EXPECT_EQ(s.circles[0].center.label, "c");
+  EXPECT_EQ(radius_kind(s.circles[0].circle()), RadiusKind::finite);
+  EXPECT_EQ(radius_kind(s.circles[1].circle()), RadiusKind::infinite);
+  EXPECT_EQ(radius_kind(s.circles[2].circle()), RadiusKind::infinite);
+  EXPECT_EQ(s.circles[0].circle().orientation(), POSITIVE);
+  // A beyond-infinity circle is a valid scene circle.
+  EXPECT_EQ(radius_kind(parse_scene("circle\n1 1\n-1 -3 -1\nend\n", "b").circles.at(0).circle()),
+            RadiusKind::beyond_infinity);
+}
+
+TEST(Scene, UndefinedLinesAndCirclesAreRejected) {
+  expect_error("line\n1 2\nend\n", 3, "a line has exactly 2 points, this one has 1");
+  expect_error("circle\n1 2\n3 4\n5 6\nend\n", 5, "a circle has exactly 2 points, this one has 3");
+  expect_error("line\n1 2\n1 2\nend\n", 3, "join(p, q) is undefined when q = p or q = antipode(p)");
+  expect_error("line\n1 2\n\n-1 -1 -2\nend\n", 4, "q = [-1, -1, -2] (line 4)");
+  expect_error("line\n2 4 2\n1 2 1\nend\n", 3, "join(p, q) is undefined");  // the same point, scaled
+  expect_error("circle\n0 1 0\n0 0 1\nend\n", 3, "circle: undefined when both the centre");
+  expect_error("line\n0 0\ncircle\n", 3, "'circle' inside the 'line' block opened on line 1");
+  expect_error("circle\n0 0\n", 1, "'circle' block is not closed");
+  expect_error("label circle 1 2\n", 1, "'circle' is a keyword, not a label name");
 }
 
 TEST(Scene, AntipodalEndpointsAreRejected) {
@@ -383,7 +422,9 @@ TEST(Scene, ReadSceneFromFileAndMissingFile) {
 // crash, a sanitizer report) fails.
 void parses_or_fails_cleanly(const std::string& text, const std::string& name) {
   try {
-    (void)parse_scene(text, name);
+    const Scene s = parse_scene(text, name);
+    for (const auto& l : s.lines) EXPECT_NO_THROW((void)l.join()) << name;  // accepted means defined
+    for (const auto& c : s.circles) EXPECT_NO_THROW((void)c.circle()) << name;
   } catch (const ParseError& e) {
     const std::string prefix = name + ":" + std::to_string(e.line()) + ": ";
     EXPECT_EQ(std::string(e.what()).substr(0, prefix.size()), prefix);
@@ -394,8 +435,8 @@ void parses_or_fails_cleanly(const std::string& text, const std::string& name) {
 
 TEST(Scene, RandomGarbageParsesOrFailsWithFileAndLine) {
   const std::string pieces[] = {"1", "-2.5", "0", " ", "\t", "\n", "\r\n", "#", "e", "e9", "999", ".",
-                                "+", "-", "nan", "inf", "label", "A", "B", "segment", "polygon", "end",
-                                "\x00", "\xff", "'", "1e-400", "0 0 0", "-1 -1 -2"};
+                                "+", "-", "nan", "inf", "label", "A", "B", "segment", "polygon", "line", "circle",
+                                "end", "\x00", "\xff", "'", "1e-400", "0 0 0", "-1 -1 -2"};
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<std::size_t> pick(0, std::size(pieces) - 1), len(0, 60);
   for (int i = 0; i < 3000 * scale(); ++i) {

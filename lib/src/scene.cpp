@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -31,7 +32,8 @@ const ScenePoint* Scene::find(std::string_view label) const {
 
 namespace {
 
-constexpr std::string_view kKeywords[] = {"label", "segment", "polygon", "end"};
+constexpr std::string_view kKeywords[] = {"label", "segment", "polygon", "line", "circle", "end"};
+constexpr std::string_view kBlocks[] = {"segment", "polygon", "line", "circle"};
 
 bool is_keyword(std::string_view w) {
   for (auto k : kKeywords)
@@ -87,9 +89,9 @@ std::vector<std::string_view> split(std::string_view s) {
   return words;
 }
 
-// An open `segment` or `polygon` block.
+// An open block: `kind` is one of kBlocks.
 struct Block {
-  bool polygon = false;
+  std::string_view kind;
   int line = 0;
   std::vector<ScenePoint> points;
 };
@@ -114,7 +116,7 @@ class Parser {
     }
     if (block_)
       throw ParseError(scene_.name, block_->line,
-                       fmt::format("'{}' block is not closed: 'end' is missing", kind()));
+                       fmt::format("'{}' block is not closed: 'end' is missing", block_->kind));
     return std::move(scene_);
   }
 
@@ -122,8 +124,6 @@ class Parser {
   [[noreturn]] void fail(const std::string& message) const {
     throw ParseError(scene_.name, line_, message);
   }
-  const char* kind() const { return block_ && block_->polygon ? "polygon" : "segment"; }
-
   void no_more(const std::vector<std::string_view>& w) const {
     if (w.size() > 1)
       fail(fmt::format("'{}' stands alone on its line, found {} after it", w[0], quote(w[1])));
@@ -131,23 +131,23 @@ class Parser {
 
   void handle(const std::vector<std::string_view>& w) {
     const std::string_view first = w[0];
-    if (first == "segment" || first == "polygon") {
+    if (std::find(std::begin(kBlocks), std::end(kBlocks), first) != std::end(kBlocks)) {
       no_more(w);
       if (block_)
         fail(fmt::format("'{}' inside the '{}' block opened on line {} ('end' missing?)", first,
-                         kind(), block_->line));
+                         block_->kind, block_->line));
       block_.emplace();
-      block_->polygon = first == "polygon";
+      block_->kind = *std::find(std::begin(kBlocks), std::end(kBlocks), first);
       block_->line = line_;
     } else if (first == "end") {
       no_more(w);
-      if (!block_) fail("'end' without an open 'segment' or 'polygon' block");
+      if (!block_) fail("'end' without an open block (segment, polygon, line or circle)");
       close_block();
     } else if (first == "label") {
       if (block_)
         fail(fmt::format("'label' inside the '{}' block opened on line {}: label the point before "
                          "the block, then write its name in the block",
-                         kind(), block_->line));
+                         block_->kind, block_->line));
       if (w.size() < 2) fail("'label' needs a name and a point: label NAME x y, or label NAME w x y");
       if (!is_name(w[1]))
         fail(fmt::format("{} is not a label name: use letters, digits, _ and ', starting with a "
@@ -169,7 +169,7 @@ class Parser {
       const ScenePoint& p = scene_.points[found->second];
       block_->points.push_back(ScenePoint{p.point, line_, p.label});
     } else if (is_letter(first[0]) && !is_non_finite_number(first)) {
-      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, end)", quote(first)));
+      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, line, circle, end)", quote(first)));
       fail(fmt::format("{} is neither a keyword nor a label defined above", quote(first)));
     } else {
       ScenePoint p = point(w);
@@ -220,10 +220,30 @@ class Parser {
     Block b = std::move(*block_);
     block_.reset();
     const std::size_t n = b.points.size();
-    if (!b.polygon) {
-      if (n != 2) fail(fmt::format("a segment has exactly 2 points, this one has {}", n));
+    if (b.kind != "polygon" && n != 2) fail(fmt::format("a {} has exactly 2 points, this one has {}", b.kind, n));
+    if (b.kind == "segment") {
       check_edge(b.points[0], b.points[1], b.points[1].line, "segment");
       scene_.segments.push_back(SceneSegment{b.points[0], b.points[1], b.line});
+      return;
+    }
+    if (b.kind == "line") {
+      const ScenePoint &p = b.points[0], &q = b.points[1];
+      if (q.point == p.point || q.point == antipode(p.point))
+        throw ParseError(scene_.name, q.line,
+                         fmt::format("line: join(p, q) is undefined when q = p or q = antipode(p); here p = {} "
+                                     "(line {}) and q = {} (line {})",
+                                     to_string(p.point), p.line, to_string(q.point), q.line));
+      scene_.lines.push_back(SceneLine{p, q, b.line});
+      return;
+    }
+    if (b.kind == "circle") {
+      const ScenePoint &c = b.points[0], &p = b.points[1];
+      if (c.point.w() == 0 && p.point.w() == 0)
+        throw ParseError(scene_.name, p.line,
+                         fmt::format("circle: undefined when both the centre {} (line {}) and the point {} "
+                                     "(line {}) are at infinity",
+                                     to_string(c.point), c.line, to_string(p.point), p.line));
+      scene_.circles.push_back(SceneCircle{c, p, b.line});
       return;
     }
     if (n < 3) fail(fmt::format("a polygon has at least 3 vertices, this one has {}", n));

@@ -21,6 +21,8 @@ namespace dr = t2::draw;
 const char* const kPointColour = "#000000";
 const char* const kSegmentColour = "#1f77b4";
 const char* const kPolygonColour = "#2ca02c";
+const char* const kLineColour = "#7f7f7f";
+const char* const kCircleColour = "#d62728";
 
 enum class Model { plane, sphere, both };
 
@@ -63,6 +65,22 @@ dr::PlaneView fit_plane(const t2::Scene& s) {
   }
   for (const auto& g : s.polygons)
     for (const auto& v : g.vertices) see(v.point);
+  for (const auto& g : s.lines) {
+    see(g.a.point);
+    see(g.b.point);
+  }
+  for (const auto& g : s.circles) {
+    // A finite or beyond-infinity circle reaches |C| + |P − C| from the origin.
+    const t2::Point &c = g.center.point, &p = g.through.point;
+    if (c.w() == 0 || p.w() == 0) {
+      see(c);
+      see(p);
+      continue;
+    }
+    const double cx = c.x() / c.w(), cy = c.y() / c.w();
+    const double far = std::hypot(cx, cy) + std::hypot(p.x() / p.w() - cx, p.y() / p.w() - cy);
+    if (std::isfinite(far)) r = std::max(r, far);
+  }
   dr::PlaneView v;
   v.half_width = std::max(1.0, 1.2 * r);
   return v;
@@ -75,6 +93,14 @@ dr::Figure figure_of(const t2::Scene& s) {
     for (const auto& p : g.vertices) v.push_back(p.point);
     f.add(v, dr::Style().color(kPolygonColour).width(2).fill(kPolygonColour).layer(0));
   }
+  for (const auto& g : s.circles) {
+    try {
+      f.add(g.circle(), dr::Style().color(kCircleColour).width(2).layer(0));
+    } catch (const t2::BadInput& e) {  // a circle too large for double coordinates
+      throw t2::ParseError(s.name, g.line, e.what());
+    }
+  }
+  for (const auto& g : s.lines) f.add(g.join(), dr::Style().color(kLineColour).width(1.5).arrow().layer(0));
   for (const auto& g : s.segments) f.segment(g.a.point, g.b.point, dr::Style().color(kSegmentColour).width(2).layer(1));
   for (const auto& p : s.points) f.add(p.point, dr::Style().color(kPointColour).label(p.label).layer(2));
   return f;
@@ -133,8 +159,10 @@ T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model,
             "Usage: t2 draw FILE [--model plane|sphere|both] [--view LAT,LON] [--format svg|png|pdf] -o OUT\n"
             "\n"
             "Reads the scene file FILE (the format is described in the README, section \"Scene\n"
-            "files\") and draws its points (with their labels), segments (blue) and polygons\n"
-            "(green) following the conventions of the figures: front side solid with filled\n"
+            "files\") and draws its points (with their labels), segments (blue), polygons\n"
+            "(green), lines (grey, arrow: orientation) and circles (red: finite, beyond infinity\n"
+            "on the other side, or infinite: a line or Ω), following the conventions of the\n"
+            "figures: front side solid with filled\n"
             "markers, back side dashed with hollow markers, Ω a grey ring (planar model) or the\n"
             "equator (spherical model).\n"
             "\n"
@@ -143,7 +171,8 @@ T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model,
             "  --format F       svg, png or pdf (default: from the extension of OUT)\n"
             "  -o OUT           the picture; written atomically, only when everything succeeded\n"
             "\n"
-            "The planar view is centred at the origin and wide enough for every finite point.\n"
+            "The planar view is centred at the origin and wide enough for every finite point\n"
+            "and every circle of finite radius.\n"
             "\n"
             "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
             "reads file:line: what is wrong; no output file is created).\n",

@@ -55,8 +55,11 @@ std::string plural(std::size_t n, const char* word) {
 }
 
 std::string report(const t2::Scene& s, bool pairs) {
-  std::string out = fmt::format("{}: {}, {}, {}\n", s.name, plural(s.points.size(), "point"),
+  std::string out = fmt::format("{}: {}, {}, {}", s.name, plural(s.points.size(), "point"),
                                 plural(s.segments.size(), "segment"), plural(s.polygons.size(), "polygon"));
+  if (!s.lines.empty()) out += ", " + plural(s.lines.size(), "line");
+  if (!s.circles.empty()) out += ", " + plural(s.circles.size(), "circle");
+  out += "\n";
   if (!s.points.empty()) {
     out += fmt::format("{:<6} {:<6} {:<8} {:<9} {:<36} {}\n", "point", "line", "label", "side",
                        "normalized [w, x, y]", "cartesian (x/w, y/w)");
@@ -76,6 +79,10 @@ std::string report(const t2::Scene& s, bool pairs) {
     out += fmt::format("polygon (line {}): {} ({} front, {} at infinity, {} back)\n", g.line,
                        fmt::format("{} vert{}", g.vertices.size(), g.vertices.size() == 1 ? "ex" : "ices"), count[2], count[1], count[0]);
   }
+  for (const auto& g : s.lines) out += fmt::format("line (line {}): {}\n", g.line, t2::to_string(g.join()));
+  for (const auto& g : s.circles)
+    out += fmt::format("circle (line {}): {}, radius {}\n", g.line, t2::to_string(g.circle()),
+                       t2::to_string(t2::radius_kind(g.circle())));
   if (pairs) {
     if (s.points.size() < 3) out += "orient: fewer than 3 points, no triples\n";
     for (std::size_t i = 0; i + 2 < s.points.size(); ++i) {

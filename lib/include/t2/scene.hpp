@@ -1,6 +1,6 @@
 #pragma once
 /// @file scene.hpp
-/// @brief Scene files: points, segments, polygons and labels of T² as plain text.
+/// @brief Scene files: points, segments, polygons, lines, circles and labels of T² as plain text.
 ///
 /// The format (README, section "Scene files") in short:
 ///
@@ -17,6 +17,14 @@
 ///       1 0
 ///       0 1
 ///     end
+///     line               # two points: the line through them, oriented from the first
+///       0 0
+///       A
+///     end
+///     circle             # the centre, then a point of the circle (any radius kind)
+///       A
+///       3 0
+///     end
 ///
 /// A file of plain points is a valid scene. Errors throw `ParseError`, whose message reads
 /// `file:line: what is wrong`.
@@ -26,7 +34,9 @@
 #include <string_view>
 #include <vector>
 
+#include "t2/circle.hpp"
 #include "t2/error.hpp"
+#include "t2/line.hpp"
 #include "t2/point.hpp"
 #include "t2/polygon.hpp"
 #include "t2/segment.hpp"
@@ -83,12 +93,34 @@ struct ScenePolygon {
   }
 };
 
+/// A `line ... end` block: two points, neither equal nor antipodal, so that their join is a
+/// line of T².
+struct SceneLine {
+  ScenePoint a;  ///< the first point
+  ScenePoint b;  ///< the second point
+  int line = 0;  ///< the line of the `line` keyword
+  /// The line a ∨ b, oriented from a to b (the parser has checked that it is defined).
+  Line join() const { return t2::join(a.point, b.point); }
+};
+
+/// A `circle ... end` block: the centre and a point of the circle, not both on Ω (circle.hpp).
+/// The circle is positive (counter-clockwise in T²).
+struct SceneCircle {
+  ScenePoint center;   ///< the centre
+  ScenePoint through;  ///< a point of the circle
+  int line = 0;        ///< the line of the `circle` keyword
+  /// The circle (the parser has checked that it is defined).
+  Circle circle() const { return Circle(center.point, through.point); }
+};
+
 /// Everything a scene file holds.
 struct Scene {
   std::string name;                    ///< the file name used in messages
   std::vector<ScenePoint> points;      ///< the points outside blocks (labelled ones included)
   std::vector<SceneSegment> segments;  ///< the `segment` blocks, in order
   std::vector<ScenePolygon> polygons;  ///< the `polygon` blocks, in order
+  std::vector<SceneLine> lines;        ///< the `line` blocks, in order
+  std::vector<SceneCircle> circles;    ///< the `circle` blocks, in order
 
   /// The labelled point named `label`, or nullptr.
   const ScenePoint* find(std::string_view label) const;

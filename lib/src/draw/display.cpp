@@ -265,6 +265,15 @@ Canvas make_canvas(double ox, double oy, double scale) {
 /// are drawn stronger.
 double back_opacity(const Style& st) { return std::min(1.0, st.fill_opacity() * 2.5); }
 
+/// The point normalized to |w| = 1 (or to max(|x|, |y|) = 1 on Ω). A proper point so far
+/// away that x/w overflows a double is drawn as the point at infinity in its direction: at
+/// more than 10^308 from the origin, no picture can tell them apart.
+Point drawable(const Point& p) {
+  if (p.w() != 0 && (!std::isfinite(p.x() / p.w()) || !std::isfinite(p.y() / p.w())))
+    return normalized(Point(0, p.x(), p.y()));
+  return normalized(p);
+}
+
 Part part_of(double w) { return w > 0 ? Part::front : (w < 0 ? Part::back : Part::infinity); }
 
 std::vector<const Item*> by_layer(const Figure& f) {
@@ -299,7 +308,7 @@ struct PlanePainter {
 
   /// The segment of T² from p to q (not antipodal), split where it crosses Ω.
   void arc(const Point& p0, const Point& q0, const Style& st, bool arrow) {
-    const Point p = normalized(p0), q = normalized(q0);
+    const Point p = drawable(p0), q = drawable(q0);
     const double wp = p.w(), wq = q.w();
     const double inf = std::numeric_limits<double>::infinity();
     V2 end{}, d{};

@@ -25,7 +25,9 @@ Figure& Figure::push(ItemKind k, std::vector<Point> pts, Style s) {
 }
 
 Figure& Figure::add_circle(const Point& c0, const Point& p0, Sign o, Style s) {
-  const Point c = normalized(c0), p = normalized(p0);
+  // Cartesian values may overflow for tiny w (checked below), so divide here, not in normalized().
+  const Point& c = c0;
+  const Point& p = p0;
   if (c.w() == 0 || p.w() == 0) {
     // Infinite radius. Centre on Ω: the line through p perpendicular to the centre's
     // direction. Proper centre, boundary on Ω: Ω. Either way the centre is on its left when
@@ -40,6 +42,8 @@ Figure& Figure::add_circle(const Point& c0, const Point& p0, Sign o, Style s) {
   const double sigma = p.w() > 0 ? 1 : -1;
   const double cx = c.x() / c.w(), cy = c.y() / c.w(), px = p.x() / p.w(), py = p.y() / p.w();
   const double r = std::hypot(px - cx, py - cy);
+  if (!std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(px) || !std::isfinite(py) || !std::isfinite(r))
+    throw BadInput("a circle whose centre or radius is beyond the range of double (about 1.8e308) cannot be drawn");
   if (r == 0) return add(p, std::move(s));  // radius zero: the single point (c, or ¬c)
   // On the back side the planar picture is mirrored: T²-counter-clockwise runs clockwise there.
   const double turn = sigma * (o == POSITIVE ? 1 : -1);
