@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -116,6 +117,77 @@ std::vector<std::string> listing_lines(const std::string& md) {
 TEST(BookCheck, ThisRepositoryIsInSync) {
   const Result r = run(tool() + " book check");
   EXPECT_EQ(r.status, 0) << r.output;
+  // The chapters' quoted output was checked against their programs (built with the tool).
+  EXPECT_NE(r.output.find("quoted output block(s), each printed by its chapter program"), std::string::npos)
+      << r.output;
+}
+
+// Chapter 01 of make_repo() quoting `block` as program output; the program is a shell script
+// in <root>/bin that runs `script`. Returns what `t2 book check --programs` says.
+Result check_quoted_output(const TempDir& t, const std::string& block, const std::string& script) {
+  make_repo(t.path);
+  const fs::path md = t.path / "chapters/01-alpha/chapter.md";
+  spit(md, slurp(md) + "\nThe program prints:\n\n```text\n" + block + "```\n");
+  const fs::path exe = t.path / "bin/chapter_01";
+  spit(exe, "#!/bin/sh\n" + script);
+  fs::permissions(exe, fs::perms::owner_all);
+  return run(tool() + " book check --root " + t.path.string() + " --programs " + (t.path / "bin").string());
+}
+
+TEST(BookCheck, QuotedOutputMustBePrintedByTheChapterProgramInOrder) {
+  const std::string prints = "echo alpha; echo '  beta  '; echo gamma; echo figures >&2\n";
+  {
+    TempDir t;  // the whole output, with its indentation; trailing spaces do not matter
+    const Result r = check_quoted_output(t, "alpha\n  beta\ngamma\n", prints);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("1 quoted output block(s)"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("figures"), std::string::npos) << r.output;  // the program's stderr is kept quiet
+  }
+  {
+    TempDir t;  // an excerpt, with a blank line
+    EXPECT_EQ(check_quoted_output(t, "alpha\n\ngamma\n", prints).status, 0);
+  }
+  {
+    TempDir t;  // a line the program does not print: reported at its own line of chapter.md
+    const Result r = check_quoted_output(t, "delta\nalpha\n", prints);
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::string md = slurp(t.path / "chapters/01-alpha/chapter.md");
+    const auto lines_before = std::count(md.begin(), md.begin() + md.find("delta"), '\n');
+    EXPECT_NE(r.output.find("chapters/01-alpha/chapter.md:" + std::to_string(lines_before + 1) +
+                            ": the output block quotes a line that chapter_01 does not print: 'delta'"),
+              std::string::npos)
+        << r.output;
+  }
+  {
+    TempDir t;  // the right lines in the wrong order
+    const Result r = check_quoted_output(t, "gamma\nalpha\n", prints);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("(after the block's previous lines): 'alpha'"), std::string::npos) << r.output;
+  }
+  {
+    TempDir t;  // indentation is part of the line
+    EXPECT_EQ(check_quoted_output(t, "beta\n", prints).status, 1);
+  }
+  {
+    TempDir t;  // a program that fails
+    const Result r = check_quoted_output(t, "alpha\n", "echo alpha; echo boom >&2; exit 3\n");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("chapter_01 failed (exit status 3): its output blocks are unchecked; it said: boom"),
+              std::string::npos)
+        << r.output;
+  }
+  {
+    TempDir t;  // no program built: said so; without --programs another root is not checked
+    make_repo(t.path);
+    const fs::path md = t.path / "chapters/01-alpha/chapter.md";
+    spit(md, slurp(md) + "\n```text\nalpha\n```\n");
+    const Result missing = run(tool() + " book check --root " + t.path.string() + " --programs " + t.path.string());
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.output.find("chapter_01 is not built in"), std::string::npos) << missing.output;
+    const Result unchecked = run(tool() + " book check --root " + t.path.string());
+    EXPECT_EQ(unchecked.status, 0) << unchecked.output;
+    EXPECT_NE(unchecked.output.find("quoted program output not checked"), std::string::npos) << unchecked.output;
+  }
 }
 
 TEST(BookCheck, CleanRepositoryPasses) {

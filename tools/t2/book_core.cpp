@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -358,15 +360,84 @@ std::vector<Problem> check_one(const fs::path& root, const std::string& rel, con
 
 }  // namespace
 
-std::vector<Problem> check_book(const fs::path& root, int* listings) {
+std::vector<OutputBlock> output_blocks(const std::string& text) {
+  std::vector<OutputBlock> out;
+  const auto lines = split_lines(text);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i] != "```text") continue;
+    OutputBlock b;
+    b.line = static_cast<int>(i);
+    for (++i; i < lines.size() && lines[i].rfind("```", 0) != 0; ++i) {
+      std::string l = lines[i];
+      l.erase(l.find_last_not_of(" \t\r") + 1);
+      if (!l.empty()) b.lines.push_back(std::move(l));
+    }
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+std::vector<Problem> check_outputs(const std::string& rel, const std::string& text, const std::string& output,
+                                   const std::string& program) {
+  std::vector<std::string> printed;
+  for (std::string l : split_lines(output)) {
+    l.erase(l.find_last_not_of(" \t\r") + 1);
+    printed.push_back(std::move(l));
+  }
+  std::vector<Problem> ps;
+  for (const OutputBlock& b : output_blocks(text)) {
+    std::size_t at = 0;  // the next printed line to look at: block lines must come in order
+    for (std::size_t k = 0; k < b.lines.size(); ++k) {
+      const auto it = std::find(printed.begin() + static_cast<std::ptrdiff_t>(at), printed.end(), b.lines[k]);
+      if (it == printed.end()) {
+        ps.push_back({rel + ":" + std::to_string(b.line + 2 + static_cast<int>(k)),
+                      "the output block quotes a line that " + program + " does not print" +
+                          (k ? " (after the block's previous lines)" : "") + ": '" + b.lines[k] + "'"});
+        break;
+      }
+      at = static_cast<std::size_t>(it - printed.begin()) + 1;
+    }
+  }
+  return ps;
+}
+
+std::vector<Problem> check_book(const fs::path& root, int* listings, const fs::path& programs, int* outputs) {
   std::vector<Problem> ps;
   if (listings) *listings = 0;
+  if (outputs) *outputs = 0;
   for (const auto& rel : chapter_markdown_files(root)) {
     const std::string text = read_text(root / rel);
     auto r = sync_listings(root, rel, text);
     if (listings) *listings += r.listings;
     ps.insert(ps.end(), r.problems.begin(), r.problems.end());
     auto more = check_one(root, rel, text);
+    ps.insert(ps.end(), more.begin(), more.end());
+  }
+  if (programs.empty()) return ps;
+  for (const auto& c : find_chapters(root)) {
+    if (!c.has_text || !c.has_program) continue;
+    const std::string rel = "chapters/" + c.folder() + "/chapter.md";
+    const std::string text = read_text(root / rel);
+    if (output_blocks(text).empty()) continue;
+    const std::string name = "chapter_" + c.number;
+    const fs::path exe = programs / name;
+    if (!fs::exists(exe)) {
+      ps.push_back({rel + ":1", name + " is not built in " + programs.string() + ": its output blocks are unchecked"});
+      continue;
+    }
+    // Figures go to a scratch directory: checking the book must not touch the repository.
+    const fs::path scratch = fs::temp_directory_path() / ("t2-book-check-" + std::to_string(::getpid()) + "-" + c.number);
+    std::string out, err;
+    const int status = run_program_capture({exe.string(), "--figures", scratch.string()}, out, err);
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    if (status != 0) {
+      ps.push_back({rel + ":1", name + " failed (exit status " + std::to_string(status) +
+                                    "): its output blocks are unchecked; it said: " + err});
+      continue;
+    }
+    if (outputs) *outputs += static_cast<int>(output_blocks(text).size());
+    auto more = check_outputs(rel, text, out, name);
     ps.insert(ps.end(), more.begin(), more.end());
   }
   return ps;
@@ -389,7 +460,10 @@ std::vector<std::string> sync_book(const fs::path& root, std::vector<Problem>& p
   return changed;
 }
 
-int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
+namespace {
+/// Runs argv[0] (no shell) with its standard output on `out_fd` and its standard error on
+/// `err_fd` (-1: inherited) and waits.
+int spawn_and_wait(const std::vector<std::string>& argv, int out_fd, int err_fd = -1) {
   std::vector<char*> a;
   for (const auto& s : argv) a.push_back(const_cast<char*>(s.c_str()));
   a.push_back(nullptr);
@@ -397,7 +471,8 @@ int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
   const pid_t pid = ::fork();
   if (pid < 0) return -1;
   if (pid == 0) {
-    if (stdout_to_stderr) ::dup2(2, 1);
+    if (out_fd >= 0) ::dup2(out_fd, 1);
+    if (err_fd >= 0) ::dup2(err_fd, 2);
     ::execvp(a[0], a.data());
     std::fprintf(stderr, "cannot run %s: %s\n", a[0], std::strerror(errno));
     ::_exit(127);
@@ -409,6 +484,27 @@ int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
   if (WIFEXITED(status)) return WEXITSTATUS(status) == 127 ? -1 : WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return -1;
+}
+}  // namespace
+
+int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
+  return spawn_and_wait(argv, stdout_to_stderr ? 2 : -1);
+}
+
+int run_program_capture(const std::vector<std::string>& argv, std::string& out, std::string& err) {
+  // The child writes to unlinked temporary files (a pipe could fill up while we wait).
+  using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+  File o(std::tmpfile(), &std::fclose), e(std::tmpfile(), &std::fclose);
+  if (!o || !e) return -1;
+  const int status = spawn_and_wait(argv, ::fileno(o.get()), ::fileno(e.get()));
+  for (auto [f, text] : {std::pair{o.get(), &out}, std::pair{e.get(), &err}}) {
+    std::rewind(f);
+    text->clear();
+    char buf[1 << 14];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text->append(buf, n);
+  }
+  return status;
 }
 
 }  // namespace t2cli::book

@@ -76,13 +76,32 @@ std::vector<LinkRef> local_links(const std::string& text);
 /// All chapter.md files of the repository (relative paths, sorted).
 std::vector<std::string> chapter_markdown_files(const fs::path& root);
 
-/// `t2 book check`: every problem of every chapter (empty when clean).
-std::vector<Problem> check_book(const fs::path& root, int* listings = nullptr);
+/// A ```text block of a chapter: program output quoted by the text.
+struct OutputBlock {
+  int line = 0;                    ///< 0-based line of the opening fence
+  std::vector<std::string> lines;  ///< its non-blank lines, trailing spaces removed
+};
+/// The ```text blocks of a markdown text.
+std::vector<OutputBlock> output_blocks(const std::string& text);
+/// Problems of the output blocks of chapter.md `rel` against `output`, the standard output of
+/// its program `program`: the non-blank lines of each block must be printed by the program, in
+/// that order (a block may quote an excerpt, not every line). One problem per block at most.
+std::vector<Problem> check_outputs(const std::string& rel, const std::string& text, const std::string& output,
+                                   const std::string& program);
+
+/// `t2 book check`: every problem of every chapter (empty when clean). With `programs` (a
+/// directory holding the built chapter_NN programs), each chapter's program is also run and
+/// its quoted output blocks checked against what it prints; `outputs` counts those blocks.
+std::vector<Problem> check_book(const fs::path& root, int* listings = nullptr, const fs::path& programs = {},
+                                int* outputs = nullptr);
 /// `t2 book sync`: rewrites listings; returns the files changed, and problems in `problems`.
 std::vector<std::string> sync_book(const fs::path& root, std::vector<Problem>& problems);
 
 /// Runs a program (no shell) and waits; returns its exit status (128+signal if killed), or
 /// -1 if it could not be started. With `stdout_to_stderr` the child's output goes to stderr.
 int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr = false);
+/// Runs a program as `run_program` does, with its standard output collected into `out` and
+/// its standard error into `err`.
+int run_program_capture(const std::vector<std::string>& argv, std::string& out, std::string& err);
 
 }  // namespace t2cli::book

@@ -16,6 +16,7 @@ struct BookArgs {
   std::string action = "build";
   fs::path root = book::default_root();
   fs::path out, docs;
+  fs::path programs;  // where chapter_NN are; empty: the own build's, if it was built from root
   bool quiet = false;
 };
 
@@ -35,6 +36,8 @@ BookArgs parse(Args args) {
       a.out = value();
     } else if (s == "--root") {
       a.root = value();
+    } else if (s == "--programs") {
+      a.programs = value();
     } else if (s == "--docs") {
       a.docs = value();
     } else if (s == "--quiet" || s == "-q") {
@@ -43,6 +46,7 @@ BookArgs parse(Args args) {
       throw UsageError("unexpected argument '" + s + "'");
     }
   }
+  if (a.action != "check" && !a.programs.empty()) throw UsageError("--programs is an option of `t2 book check`");
   if (a.action != "build" && (!a.out.empty() || !a.docs.empty()))
     throw UsageError("--out and --docs are options of `t2 book build`");
   if (!fs::is_directory(a.root / "chapters")) throw UsageError("no chapters/ folder in " + a.root.string());
@@ -56,8 +60,12 @@ void print_problems(const std::vector<book::Problem>& ps) {
 int run(Args args) {
   const BookArgs a = parse(args);
   if (a.action == "check") {
-    int listings = 0;
-    const auto ps = book::check_book(a.root, &listings);
+    int listings = 0, outputs = 0;
+    fs::path programs = a.programs;
+    std::error_code ec;
+    if (programs.empty() && fs::equivalent(a.root, book::default_root(), ec))
+      programs = book::own_build_dir() / "bin";  // the programs were built from this root
+    const auto ps = book::check_book(a.root, &listings, programs, &outputs);
     const auto files = book::chapter_markdown_files(a.root);
     if (!ps.empty()) {
       print_problems(ps);
@@ -65,8 +73,14 @@ int run(Args args) {
                  ps.size(), files.size());
       return kFailed;
     }
-    if (!a.quiet) fmt::print("t2 book check: {} chapter(s), {} listing(s), all in sync, every figure and link exists\n",
-                             files.size(), listings);
+    if (!a.quiet) {
+      fmt::print("t2 book check: {} chapter(s), {} listing(s), all in sync, every figure and link exists\n",
+                 files.size(), listings);
+      if (programs.empty())
+        fmt::print("t2 book check: quoted program output not checked (no --programs DIR for this root)\n");
+      else
+        fmt::print("t2 book check: {} quoted output block(s), each printed by its chapter program\n", outputs);
+    }
     return kOk;
   }
   if (a.action == "sync") {
@@ -101,7 +115,7 @@ int run(Args args) {
 
 T2_COMMAND({"book", "build the HTML book; check or sync its listings",
             "Usage: t2 book [build] [--out DIR] [--docs DIR] [--root DIR] [--quiet]\n"
-            "       t2 book check [--root DIR]\n"
+            "       t2 book check [--root DIR] [--programs DIR]\n"
             "       t2 book sync  [--root DIR]\n"
             "\n"
             "build  Makes the HTML book with pandoc: a contents page by part, one page per chapter\n"
@@ -112,6 +126,11 @@ T2_COMMAND({"book", "build the HTML book; check or sync its listings",
             "check  Fails (exit 1) when a listing differs from the source region it is cut from,\n"
             "       when a marker //> NAME ... //< NAME is missing, or when a figure or link target\n"
             "       does not exist. Prints chapter:line, listing and the first differing line.\n"
+            "       It also runs each chapter program (figures to a scratch folder) and fails when a\n"
+            "       ```text block of its chapter quotes a line the program does not print (the\n"
+            "       block's lines must appear in the output in order; an excerpt is fine). The\n"
+            "       programs are DIR/chapter_NN with --programs DIR, by default this build's bin/\n"
+            "       when --root is the checkout t2 was built from (otherwise output is unchecked).\n"
             "sync   Rewrites every listing of every chapter from its source region.\n"
             "\n"
             "A listing in chapter.md is the comment <!-- listing: PATH#NAME --> (PATH relative to\n"
