@@ -1,5 +1,4 @@
 // `t2 release student|autograder|classroom OUT`: what instructors hand out.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -12,6 +11,7 @@
 #include "command.hpp"
 #include "grader_core.hpp"
 #include "grader_release.hpp"
+#include "process.hpp"
 #include "t2/io.hpp"
 
 #ifndef T2_SOURCE_DIR
@@ -132,15 +132,12 @@ int autograder(const fs::path& zip, const std::optional<std::string>& exercise) 
   fs::permissions(stage / "run_autograder", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
                   fs::perm_options::add);
   const fs::path tmpzip = fs::path(tmpl) / "bundle.zip";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(stage.c_str()) != 0) _exit(127);
-    execlp("zip", "zip", "-q", "-r", tmpzip.c_str(), ".", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int st = 0;
-  waitpid(pid, &st, 0);
-  if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) throw std::runtime_error("zip failed (is it installed? see scripts/deps.sh)");
+  t2proc::Spec zip_run;
+  zip_run.argv = {"zip", "-q", "-r", tmpzip.string(), "."};
+  zip_run.cwd = stage;
+  const t2proc::Result zipped = t2proc::run(zip_run);
+  if (!zipped.ok())
+    throw std::runtime_error("zip failed (is it installed? see scripts/deps.sh): " + zipped.error + zipped.err);
   std::ifstream in(tmpzip, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
