@@ -1,9 +1,11 @@
 // t2 info: what a scene file holds, point by point.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -97,57 +99,49 @@ std::string report(const t2::Scene& s, bool pairs) {
   return out;
 }
 
-int run(Args args) {
-  std::optional<std::string> file, output;
+struct Options {
+  std::string file;
+  std::optional<std::string> output;
   bool pairs = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--pairs") {
-      pairs = true;
-    } else if (a == "-o") {
-      if (i + 1 == args.size()) throw UsageError("-o needs a file name");
-      output = args[++i];
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw UsageError(fmt::format("unknown option '{}'", a));
-    } else if (file) {
-      throw UsageError("give exactly one scene file");
-    } else {
-      file = a;
-    }
-  }
-  if (!file) throw UsageError("give a scene file (or - for standard input)");
+};
+
+int info(const Options& o) {
   t2::Scene scene;
-  if (*file == "-") {
+  if (o.file == "-") {
     const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
     scene = t2::parse_scene(text, "<stdin>");
   } else {
-    scene = t2::read_scene(*file);
+    scene = t2::read_scene(o.file);
   }
-  const std::string out = report(scene, pairs);
-  if (output)
-    t2::write_file_atomically(*output, out);
+  const std::string out = report(scene, o.pairs);
+  if (o.output)
+    t2::write_file_atomically(*o.output, out);
   else
     fmt::print("{}", out);
   return kOk;
 }
 
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Reads the scene file FILE (- for standard input; the format is described in the\n"
+      "README, section \"Scene files\") and prints, for each point outside blocks, its side\n"
+      "of T2 (front w>0, back w<0, infinity w=0), its normalized coordinates (a positive\n"
+      "rescaling: w = +1 or -1, or max(|x|,|y|) = 1 at infinity) and its Cartesian\n"
+      "coordinates (x/w, y/w) where defined; then one line per segment and polygon.");
+  app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
+  app.add_flag("--pairs", o->pairs,
+               "also print orient(p, q, r) (+1, 0, -1, exact) of every three consecutive\npoints");
+  app.add_option("-o", o->output, "write the report to OUT (atomically) instead of standard output")
+      ->type_name("OUT");
+  app.footer(
+      "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
+      "reads file:line: what is wrong).");
+  return [o] { return info(*o); };
+}
+
 }  // namespace
 
-T2_COMMAND({"info", "what a scene file holds: sides, coordinates, orientations",
-            "Usage: t2 info FILE [--pairs] [-o OUT]\n"
-            "\n"
-            "Reads the scene file FILE (- for standard input; the format is described in the\n"
-            "README, section \"Scene files\") and prints, for each point outside blocks, its side\n"
-            "of T2 (front w>0, back w<0, infinity w=0), its normalized coordinates (a positive\n"
-            "rescaling: w = +1 or -1, or max(|x|,|y|) = 1 at infinity) and its Cartesian\n"
-            "coordinates (x/w, y/w) where defined; then one line per segment and polygon.\n"
-            "\n"
-            "  --pairs   also print orient(p, q, r) (+1, 0, -1, exact) of every three consecutive\n"
-            "            points\n"
-            "  -o OUT    write the report to OUT (atomically) instead of standard output\n"
-            "\n"
-            "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
-            "reads file:line: what is wrong).\n",
-            run});
+T2_COMMAND({"info", "what a scene file holds: sides, coordinates, orientations", setup});
 
 }  // namespace t2cli

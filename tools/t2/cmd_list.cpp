@@ -1,5 +1,8 @@
 // t2 list: the chapters of the course.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <memory>
 
 #include "book_core.hpp"
 #include "command.hpp"
@@ -7,15 +10,7 @@
 namespace t2cli {
 namespace {
 
-int run(Args args) {
-  std::filesystem::path root = book::default_root();
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--root" && i + 1 < args.size()) {
-      root = args[++i];
-    } else {
-      throw UsageError("unexpected argument '" + args[i] + "'");
-    }
-  }
+int list(const std::filesystem::path& root) {
   const auto chapters = book::find_chapters(root);
   if (chapters.empty()) {
     fmt::print("no chapters in {}\n", (root / "chapters").string());
@@ -30,14 +25,19 @@ int run(Args args) {
   return kOk;
 }
 
+Action setup(CLI::App& app) {
+  auto root = std::make_shared<std::filesystem::path>(book::default_root());
+  app.description(
+      "Prints one line per chapter folder chapters/NN-slug/: the number, the slug, whether\n"
+      "the chapter has a program (main.cpp, run it with `t2 run NN`) and the title (the first\n"
+      "'# ' heading of chapter.md).");
+  app.add_option("--root", *root, "the checkout whose chapters are listed (default: the one t2 was\nbuilt from)")
+      ->type_name("DIR");
+  return [root] { return list(*root); };
+}
+
 }  // namespace
 
-T2_COMMAND({"list", "list the chapters of the course",
-            "Usage: t2 list [--root DIR]\n"
-            "\n"
-            "Prints one line per chapter folder chapters/NN-slug/: the number, the slug, whether\n"
-            "the chapter has a program (main.cpp, run it with `t2 run NN`) and the title (the first\n"
-            "'# ' heading of chapter.md).\n",
-            run});
+T2_COMMAND({"list", "list the chapters of the course", setup});
 
 }  // namespace t2cli

@@ -1,6 +1,8 @@
 // t2 run NN: build the program of a chapter if needed, then run it.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,21 +14,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(Args args) {
-  if (args.empty()) throw UsageError("which chapter? (t2 list shows them)");
-  std::size_t i = 0;
+struct Options {
+  std::string chapter;
   bool no_build = false;
-  if (args[i] == "--no-build") {
-    no_build = true;
-    ++i;
-  }
-  if (i >= args.size()) throw UsageError("which chapter? (t2 list shows them)");
-  const auto c = book::find_chapter(book::default_root(), args[i]);
-  if (!c) throw UsageError("no chapter '" + args[i] + "' (t2 list shows them)");
+};
+
+int run(const Options& o, const std::vector<std::string>& args) {
+  const auto c = book::find_chapter(book::default_root(), o.chapter);
+  if (!c) throw UsageError("no chapter '" + o.chapter + "' (t2 list shows them)");
   if (!c->has_program) throw UsageError("chapter " + c->folder() + " has no program (main.cpp) yet");
   const fs::path build = book::own_build_dir();
   const std::string target = "chapter_" + c->number;
-  if (!no_build) {
+  if (!o.no_build) {
     // cmake's progress goes to stderr, so that stdout holds only the program's output.
     const int rc = book::run_program({"cmake", "--build", build.string(), "--target", target}, true);
     if (rc != 0) {
@@ -40,20 +39,26 @@ int run(Args args) {
     return kFailed;
   }
   std::vector<std::string> argv = {exe.string()};
-  argv.insert(argv.end(), args.begin() + static_cast<std::ptrdiff_t>(i) + 1, args.end());
+  argv.insert(argv.end(), args.begin(), args.end());
   const int rc = book::run_program(argv);
   return rc < 0 ? kFailed : rc;
 }
 
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Builds the chapter's program (cmake --build <build dir> --target chapter_NN, in the\n"
+      "build directory this t2 belongs to; its messages go to stderr) and runs it with ARGS,\n"
+      "e.g. `t2 run 01 --figures /tmp/fig`. NN may be 1, 01, the slug or NN-slug. The exit\n"
+      "status is the program's.");
+  app.add_flag("--no-build", o->no_build, "run the program as it is");
+  app.add_option("NN", o->chapter, "the chapter (t2 list shows them)")->required();
+  app.prefix_command();  // everything after NN goes to the program
+  return [o, &app] { return run(*o, app.remaining()); };
+}
+
 }  // namespace
 
-T2_COMMAND({"run", "build and run the program of a chapter",
-            "Usage: t2 run [--no-build] NN [ARGS...]\n"
-            "\n"
-            "Builds the chapter's program (cmake --build <build dir> --target chapter_NN, in the\n"
-            "build directory this t2 belongs to; its messages go to stderr) and runs it with ARGS,\n"
-            "e.g. `t2 run 01 --figures /tmp/fig`. NN may be 1, 01, the slug or NN-slug. The exit\n"
-            "status is the program's. --no-build runs the program as it is.\n",
-            run});
+T2_COMMAND({"run", "build and run the program of a chapter", setup});
 
 }  // namespace t2cli

@@ -1,9 +1,12 @@
-// t2: the command line of the course. `t2 --help` lists the subcommands.
+// t2: the command line of the course. `t2 --help` lists the subcommands; each parses its own
+// arguments with CLI11 (see command.hpp for how to add one).
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,127 @@ void print_overview() {
       "\nExit status: 0 done, 1 a check failed, 2 bad usage or bad input,\n"
       "             3 the answer is undefined in T2 (the message says why).\n");
 }
+
+/// The help of a command, in the shape of the hand-written texts it replaced:
+///   Usage: t2 NAME ARG [--flag] [--option VALUE] ...   (generated, in declaration order)
+///   <description>
+///   Arguments: / Options: one line each, with their help lines
+///   <footer>
+class Help : public CLI::Formatter {
+ public:
+  std::string make_usage(const CLI::App* app, std::string name) const override {
+    std::string out = "Usage: " + name;
+    for (const CLI::Option* o : app->get_options()) {
+      if (o == app->get_help_ptr()) continue;
+      std::string word = o->get_positional() ? o->get_name(true, false) : shortest_long_name(o);
+      if (!o->get_positional() && !o->get_type_name().empty()) word += " " + o->get_type_name();
+      if (o->get_expected_max() > 1) word += "...";
+      out += " " + (o->get_required() ? word : "[" + word + "]");
+    }
+    if (app->get_prefix_command()) out += " [ARGS...]";
+    return out + "\n";
+  }
+
+  std::string make_help(const CLI::App* app, std::string name, CLI::AppFormatMode) const override {
+    std::string out = make_usage(app, name);
+    if (!app->get_description().empty()) out += "\n" + app->get_description() + "\n";
+    std::vector<const CLI::Option*> args, opts;
+    for (const CLI::Option* o : app->get_options()) {
+      if (o == app->get_help_ptr() || o->get_description().empty()) continue;
+      (o->get_positional() ? args : opts).push_back(o);
+    }
+    out += group(args, true) + group(opts, false);
+    if (!app->get_footer().empty()) out += "\n" + app->get_footer() + "\n";
+    return out;
+  }
+
+ private:
+  // The name shown in the usage line: the long one (--jobs) when there is one.
+  static std::string shortest_long_name(const CLI::Option* o) {
+    if (!o->get_lnames().empty()) return "--" + o->get_lnames().front();
+    return "-" + o->get_snames().front();
+  }
+
+  static std::string group(const std::vector<const CLI::Option*>& os, bool positional) {
+    if (os.empty()) return "";
+    std::vector<std::string> names;
+    std::size_t width = 0;
+    for (const CLI::Option* o : os) {
+      std::string n;
+      if (positional) {
+        n = o->get_name(true, false);
+      } else {
+        for (const auto& s : o->get_snames()) n += (n.empty() ? "-" : ", -") + s;
+        for (const auto& l : o->get_lnames()) n += (n.empty() ? "--" : ", --") + l;
+        if (!o->get_type_name().empty()) n += " " + o->get_type_name();
+      }
+      width = std::max(width, n.size());
+      names.push_back(n);
+    }
+    width = std::min<std::size_t>(width, 24);
+    std::string out = positional ? "\nArguments:\n" : "\nOptions:\n";
+    for (std::size_t i = 0; i < os.size(); ++i) {
+      std::string line = fmt::format("  {:<{}}  ", names[i], width);
+      if (names[i].size() > width) line = "  " + names[i] + "\n" + std::string(width + 4, ' ');
+      for (char c : os[i]->get_description()) {
+        line += c;
+        if (c == '\n') line += std::string(width + 4, ' ');
+      }
+      out += line + "\n";
+    }
+    return out;
+  }
+};
+
+/// The CLI11 application of command c, its options declared; `action` receives what to run.
+std::unique_ptr<CLI::App> make_app(const Command& c, Action& action) {
+  auto app = std::make_unique<CLI::App>(std::string(), std::string("t2 ") + c.name);
+  app->formatter(std::make_shared<Help>());
+  app->set_help_flag("-h,--help", "print this help");
+  action = c.setup(*app);
+  return app;
+}
+
+// The transitional path of a self-parsing command (see Command).
+int run_self_parsing(const Command& c, const std::vector<std::string>& rest) {
+  if (std::any_of(rest.begin(), rest.end(), [](const std::string& a) { return a == "-h" || a == "--help"; })) {
+    fmt::print("{}", c.help);
+    return kOk;
+  }
+  return c.run(rest);
+}
+
+int print_help(const Command& c) {
+  if (!c.setup) {
+    fmt::print("{}", c.help);
+    return kOk;
+  }
+  Action action;
+  const auto app = make_app(c, action);
+  fmt::print("{}", app->help());
+  return kOk;
+}
+
+int usage_error(const Command& c, const std::string& message) {
+  fmt::print(stderr, "t2 {}: {}\n(see t2 help {})\n", c.name, message, c.name);
+  return kBadInput;
+}
+
+// Parses the arguments of c, then runs it.
+int dispatch(const Command& c, const std::vector<std::string>& rest) {
+  if (!c.setup) return run_self_parsing(c, rest);
+  Action action;
+  const auto app = make_app(c, action);
+  try {
+    app->parse(std::vector<std::string>(rest.rbegin(), rest.rend()));  // CLI11 takes them reversed
+  } catch (const CLI::Success&) {  // -h or --help
+    fmt::print("{}", app->help());
+    return kOk;
+  } catch (const CLI::ParseError& e) {
+    return usage_error(c, e.what());
+  }
+  return action();
+}
 }  // namespace
 
 void register_command(const Command& c) { registry().push_back(c); }
@@ -40,9 +164,6 @@ const Command* find_command(const std::string& name) {
   for (const auto& c : registry())
     if (name == c.name) return &c;
   return nullptr;
-}
-bool wants_help(Args args) {
-  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "-h" || a == "--help"; });
 }
 
 }  // namespace t2cli
@@ -68,24 +189,17 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "t2 help: no command named '{}' (see t2 --help)\n", args[1]);
       return kBadInput;
     }
-    fmt::print("{}", c->help);
-    return kOk;
+    return print_help(*c);
   }
   const Command* c = find_command(args[0]);
   if (!c) {
     fmt::print(stderr, "t2: no command named '{}' (see t2 --help)\n", args[0]);
     return kBadInput;
   }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (wants_help(rest)) {
-    fmt::print("{}", c->help);
-    return kOk;
-  }
   try {
-    return c->run(rest);
+    return dispatch(*c, std::vector<std::string>(args.begin() + 1, args.end()));
   } catch (const UsageError& e) {
-    fmt::print(stderr, "t2 {}: {}\n(see t2 help {})\n", c->name, e.what(), c->name);
-    return kBadInput;
+    return usage_error(*c, e.what());
   } catch (const t2::Undefined& e) {
     fmt::print(stderr, "t2 {}: undefined in T2: {}\n", c->name, e.what());
     return kUndefined;
