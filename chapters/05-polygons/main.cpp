@@ -8,6 +8,7 @@
 #include <t2/t2.hpp>
 
 #include <filesystem>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -203,7 +204,104 @@ void ears() {
   }
   std::cout << "sum " << sum.get_str() << " = 2*area of the polygon " << t2::signed_area(poly).get_str() << "\n";
   //< ear-demo
+  //> ear-complement
+  // A small square traversed clockwise: its positive side is everything outside the square.
+  const ExactPolygon cw{P(0, 0), P(0, 1), P(1, 1), P(1, 0)};
+  std::cout << "clockwise square, turn at each vertex:";
+  for (std::size_t i = 0; i < cw.size(); ++i)
+    std::cout << " " << sym(t2::orient(cw[(i + 3) % 4], cw[i], cw[(i + 1) % 4]));
+  std::cout << " (every vertex reflex for the positive side)\n";
+  //< ear-complement
   std::cout << "\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6. Convexity in T².
+
+//> hull-certificates
+// The two certificates of the hemisphere theorem. A set lies in the open hemisphere of l when
+// every point is strictly on the positive side of l; a set has no convex hull when some
+// coefficients λ_i >= 0, not all zero, make the vector sum Σ λ_i a_i the zero vector.
+bool in_open_hemisphere(const t2::ExactLine& l, const ExactPolygon& A) {
+  for (const ExactPoint& a : A)
+    if (t2::side(l, a) != t2::POSITIVE) return false;
+  return true;
+}
+bool sums_to_zero(const std::vector<int>& lambda, const ExactPolygon& A) {
+  t2::Integer w = 0, x = 0, y = 0;
+  bool some = false;
+  for (std::size_t i = 0; i < A.size(); ++i) {
+    if (lambda[i] < 0) return false;
+    some = some || lambda[i] > 0;
+    w += lambda[i] * A[i].w();
+    x += lambda[i] * A[i].x();
+    y += lambda[i] * A[i].y();
+  }
+  return some && w == 0 && x == 0 && y == 0;
+}
+//< hull-certificates
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::logic_error(std::string("chapter 05 check failed: ") + what);
+}
+
+// The three sets of section 6: A has a hull (front, back and Ω points), B has none (the
+// antipode of its back point is inside its front triangle), C lies on one line, in no open
+// hemisphere although no two of its points are antipodal.
+ExactPolygon set_A() { return {P(-2, -1), P(2, -1), ExactPoint(0, -1, 1), ExactPoint(-1, 1, 3)}; }
+ExactPolygon set_B() { return {P(-2, -1), P(2, -1), P(0, 2), ExactPoint(-1, 0, 0)}; }
+
+// The hull of a set in general position that lies in an open hemisphere, by its definition:
+// a -> b is an edge when every other point is strictly to its left. O(n^3): enough for a figure.
+std::vector<std::size_t> hull_order(const ExactPolygon& A) {
+  std::vector<std::size_t> order;
+  std::size_t i = 0, guard = 0;
+  do {
+    for (std::size_t j = 0; j < A.size(); ++j) {
+      bool edge = i != j;
+      for (std::size_t k = 0; k < A.size() && edge; ++k)
+        if (k != i && k != j) edge = t2::orient(A[i], A[j], A[k]) == t2::POSITIVE;
+      if (edge) {
+        order.push_back(i);
+        i = j;
+        break;
+      }
+    }
+    require(++guard <= A.size(), "hull edges form one cycle");
+  } while (i != 0 || order.empty());
+  return order;
+}
+
+void convexity() {
+  std::cout << "== 6. Convexity in T2\n";
+  auto list = [](const ExactPolygon& A) {
+    std::string s;
+    for (const auto& a : A) s += str(a) + " ";
+    return s;
+  };
+  //> hull-demo
+  const ExactPolygon A = set_A(), B = set_B();
+  const ExactPolygon C{ExactPoint(2, 0, 0), ExactPoint(-1, 1, 0), ExactPoint(-1, -1, 0)};
+  const t2::ExactLine l(2, 0, 1);  // 2w + y > 0
+  std::cout << "A = " << list(A) << ": all on the positive side of " << t2::to_string(l) << ": "
+            << in_open_hemisphere(l, A) << "\n";
+  std::cout << "B = " << list(B) << ": 1 b0 + 1 b1 + 1 b2 + 3 b3 = [0, 0, 0]: "
+            << sums_to_zero({1, 1, 1, 3}, B) << "\n";
+  std::cout << "C = " << list(C) << ": 1 c0 + 1 c1 + 1 c2 = [0, 0, 0]: "
+            << sums_to_zero({1, 1, 1}, C) << "\n";
+  //< hull-demo
+  bool antipodal = false;
+  for (const auto* S : {&A, &B, &C})
+    for (const auto& p : *S)
+      for (const auto& q : *S) antipodal = antipodal || p == t2::antipode(q);
+  std::cout << "antipodal pairs in A, B, C: " << antipodal << "; side(<0, 0, 1>, c) for c in C: "
+            << sym(t2::side(t2::ExactLine(0, 0, 1), C[0])) << sym(t2::side(t2::ExactLine(0, 0, 1), C[1]))
+            << sym(t2::side(t2::ExactLine(0, 0, 1), C[2])) << "\n";
+  require(in_open_hemisphere(l, A) && sums_to_zero({1, 1, 1, 3}, B) && sums_to_zero({1, 1, 1}, C) && !antipodal,
+          "hemisphere certificates");
+  std::cout << "hull of A, counter-clockwise:";
+  for (const std::size_t i : hull_order(A)) std::cout << " a" << i;
+  std::cout << "\n\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -214,14 +312,38 @@ void figures(const std::filesystem::path& dir) {
   plane.half_width = 5;
   plane.cx = 3;
   plane.cy = 2;
-  dr::SphereView sphere;
   int written = 0, count = 0;
-  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv) {
+  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv,
+                  const dr::SphereView& sv = dr::SphereView()) {
     written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sphere, dir / (name + "-sphere.svg"));
+    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
     count += 2;
   };
   const ExactPolygon& poly = example_polygon();
+  {  // Convexity: A has a hull inside the open hemisphere of l; B has none.
+    dr::Figure f;
+    const ExactPolygon A = set_A();
+    ExactPolygon hull;
+    for (const std::size_t i : hull_order(A)) hull.push_back(A[i]);
+    f.add(t2::ExactLine(2, 0, 1), dr::Style().color("#888888").dash({5, 3}).label("l"));
+    f.add(hull, dr::Style().fill("#2ca02c").fill_opacity(0.2).color("#2ca02c").width(1.6));
+    for (std::size_t i = 0; i < A.size(); ++i) f.add(A[i], dr::Style().label("a" + std::to_string(i)));
+    dr::PlaneView pv;
+    pv.cy = -1;
+    dr::SphereView side_on;  // l's great circle nearly edge-on, its positive side above it
+    side_on.lat = 20;
+    side_on.lon = 10;
+    save(f, "hull-exists", pv, side_on);
+    dr::Figure g;
+    const ExactPolygon B = set_B();
+    g.add(ExactPolygon{B[0], B[1], B[2]}, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
+    for (std::size_t i = 0; i < 3; ++i) g.segment(B[i], B[3], dr::Style().color("#d62728").dash({4, 3}));
+    for (std::size_t i = 0; i < B.size(); ++i) g.add(B[i], dr::Style().label("b" + std::to_string(i)));
+    dr::SphereView from_minus_y;  // the front triangle on top, the back point b3 below
+    from_minus_y.lat = 30;
+    from_minus_y.lon = -100;
+    save(g, "hull-none", pv, from_minus_y);
+  }
   {  // Point location: inside green, outside red, boundary black.
     dr::Figure f;
     f.add(poly, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
@@ -244,7 +366,10 @@ void figures(const std::filesystem::path& dir) {
     wide.half_width = 8;
     wide.cx = -1;
     wide.cy = -1;
-    save(f, "t2-polygon", wide);
+    dr::SphereView facing;  // towards the mean of the vertices' unit vectors, (3.2, 2.1, 2.1)
+    facing.lat = 28;
+    facing.lon = 32;
+    save(f, "t2-polygon", wide, facing);
   }
   {  // Ear clipping.
     dr::Figure f;
@@ -295,5 +420,6 @@ int main(int argc, char** argv) {
   area();
   point_in_polygon();
   ears();
+  convexity();
   figures(dir);
 }

@@ -155,11 +155,13 @@ Sign locate(const BasicPolygon<T>& P, const BasicPoint<T>& q) {
   const std::size_t k = (P[0] == antipode(q)) ? 1 : 0;
   auto p = [&](std::size_t i) -> const BasicPoint<T>& { return P[(k + i) % n]; };
   const BasicPoint<T>& p0 = p(0);
+  //> perturbation
   const BasicPoint<T> nn = detail::off_line_point(p0, q);
   auto oq = [&](const BasicPoint<T>& a, const BasicPoint<T>& b) {  // Δ(q_ε, a, b)
     const Sign s = orient(q, a, b);
     return s != ZERO ? s : orient(nn, a, b);
   };
+  //< perturbation
   //> algorithm2-start
   Sign s = oq(p0, p(1));                   // side of p0∨p1 the walk p0→q enters
   const Sign t = orient(p(n - 1), p0, p(1));  // +1: p0 is a convex vertex, -1: reflex
