@@ -1,0 +1,224 @@
+#pragma once
+/// @file delaunay.hpp
+/// @brief The Delaunay triangulation of front points of T² by randomized incremental
+/// construction: BRIO–Hilbert insertion order, a remembering walk, Lawson flips, exact
+/// predicates and a symbolic perturbation that makes the result unique.
+///
+/// **Algorithm.** Points are inserted in the order of `spatial_order`. Each is located by the
+/// walk of triangulation.hpp from the last triangle created, then inserted in its triangle, on
+/// its edge, or — outside the hull — in the infinite triangle of a hull edge it sees; then
+/// every edge opposite the new point p is tested and flipped while p lies inside the circle of
+/// the triangle across (Lawson). For an infinite triangle (a, b, v∞) the "circle" is the line
+/// a → b and its inside the open half-plane beyond it (plus the open segment ab): flipping those
+/// edges is what adds the other hull edges that p sees (Algorithm 9 of seed 000 with v∞).
+///
+/// **Degenerate input, the rule.**
+///  - *Duplicates* are merged: the point of smallest index is the vertex, the others are listed
+///    in `Triangulation::duplicates()` as (dropped, kept) pairs.
+///  - *All points collinear* (or fewer than three distinct points): no triangle. The result has
+///    dimension() 1 (0 if all points are equal, −1 if there are none), its points, no triangle
+///    and no hull edge, and its duplicates.
+///  - *Cocircular points* are triangulated as if perturbed (Devillers and Teillaud,
+///    "Perturbations for Delaunay and weighted Delaunay 3D triangulations", CGAL's
+///    `side_of_oriented_circle(..., perturb = true)`): point s is lifted to (s, |s|² + ε^{r(s)})
+///    where r(s) is the rank of s in the *decreasing* lexicographic (x, y) order, so the
+///    lexicographically larger a point, the larger its lift's perturbation. When the exact
+///    in-circle sign of a, b, c (counter-clockwise) and d is zero, the sign of the perturbed
+///    4×4 determinant |x, y, x² + y² + ε_s, 1| is the sign of its first nonzero ε-coefficient in
+///    that order. Expanding along the lift column, the coefficient of ε_d is −orient(a, b, c) and
+///    that of ε_c, ε_b, ε_a is orient(a, b, d), orient(a, d, c), orient(d, b, c). Going through
+///    the points from the largest: if it is d the answer is NEGATIVE (orient(a, b, c) > 0);
+///    otherwise the orientation of the other three decides unless it is zero. Two steps always
+///    decide: if the coefficients of the two largest points (neither d) both vanished, the two
+///    triples without each would be collinear; they share two points, so all four points would be
+///    collinear, against orient(a, b, c) > 0. *Consistency:* the perturbed predicate is the exact
+///    in-circle sign of one fixed set of lifted points (for every ε small enough), no four of
+///    which are coplanar; so Lawson's flips terminate with its unique Delaunay triangulation —
+///    the projection of the lower hull of the lifted points — and the walk terminates on it
+///    (triangulation.hpp). The perturbation depends on the points only, not on their indices or
+///    their order, so the triangle set is the same for every permutation of the input, and it
+///    is the one CGAL's `Delaunay_triangulation_2` computes (the tests compare them).
+///
+/// **Kernel.** `delaunay_with<K>` takes the predicates from a kernel type K (orient, in_circle,
+/// compare_xy on `t2::Point`) and calls its trace hooks (inserted, flipped); the default
+/// `DelaunayKernel` calls the exact `t2::orient`, `t2::in_circle` and `t2::compare_xy` and
+/// traces nothing, at no cost. A faster kernel or an animation trace drops in without touching
+/// the algorithm.
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <span>
+#include <vector>
+
+#include "t2/error.hpp"
+#include "t2/incircle.hpp"
+#include "t2/lexicographic.hpp"
+#include "t2/orient.hpp"
+#include "t2/point.hpp"
+#include "t2/triangulation/spatial_sort.hpp"
+#include "t2/triangulation/triangulation.hpp"
+
+namespace t2 {
+
+/// The default kernel of `delaunay_with`: the exact predicates of the library, no trace.
+struct DelaunayKernel {
+  /// Exact orientation of three points.
+  static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
+  /// Exact oriented in-circle test.
+  static Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return t2::in_circle(a, b, c, d);
+  }
+  /// Exact lexicographic comparison of Cartesian coordinates (the perturbation order).
+  static Sign compare_xy(const Point& p, const Point& q) { return t2::compare_xy(p, q); }
+  /// Trace hook: point `v` has just been inserted (before its flips).
+  void inserted(const Triangulation&, Triangulation::Index) {}
+  /// Trace hook: the edge opposite vertex 0 of t has just been flipped (t and u are the new triangles).
+  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
+};
+
+//> perturbed-in-circle
+/// The in-circle sign of d against the counter-clockwise triangle a, b, c under the symbolic
+/// perturbation of the file comment: never ZERO for four distinct points.
+template <class K>
+Sign perturbed_in_circle(const K& k, const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Sign s = k.in_circle(a, b, c, d);
+  if (s != ZERO) return s;
+  const Point* p[4] = {&a, &b, &c, &d};
+  std::sort(p, p + 4, [&](const Point* u, const Point* v) { return k.compare_xy(*u, *v) == NEGATIVE; });
+  for (int i = 3; i > 1; --i) {  // from the largest point, whose perturbation dominates
+    Sign o = ZERO;
+    if (p[i] == &d) return NEGATIVE;
+    if (p[i] == &c) o = k.orient(a, b, d);
+    if (p[i] == &b) o = k.orient(a, d, c);
+    if (p[i] == &a) o = k.orient(d, b, c);
+    if (o != ZERO) return o;
+  }
+  throw Undefined("perturbed_in_circle: four collinear points (a, b, c must turn counter-clockwise)");
+}
+//< perturbed-in-circle
+
+namespace detail {
+
+/// Is the finite point p in conflict with triangle t, i.e. inside its (perturbed) circle, or for
+/// an infinite triangle (a, b, v∞) strictly beyond a → b or inside the segment ab?
+template <class K>
+bool in_conflict(const K& k, const Triangulation& tr, Triangulation::Index t, const Point& p) {
+  const Triangulation::Index v0 = tr.vertex(t, 0), v1 = tr.vertex(t, 1), v2 = tr.vertex(t, 2);
+  const int inf = v0 == Triangulation::infinite ? 0 : v1 == Triangulation::infinite ? 1 : v2 == Triangulation::infinite ? 2 : -1;
+  if (inf < 0) return perturbed_in_circle(k, tr.point(v0), tr.point(v1), tr.point(v2), p) == POSITIVE;
+  const Point& a = tr.point(tr.vertex(t, (inf + 1) % 3));
+  const Point& b = tr.point(tr.vertex(t, (inf + 2) % 3));
+  const Sign o = k.orient(a, b, p);
+  if (o != ZERO) return o == POSITIVE;
+  const Sign ap = k.compare_xy(a, p), pb = k.compare_xy(p, b);
+  return ap != ZERO && ap == pb;  // strictly between a and b on their line
+}
+
+/// Checks that every point is on the front side (the planar Delaunay triangulation).
+inline void require_front(std::span<const Point> points) {
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (points[k].w() <= 0)
+      throw Undefined("delaunay: point " + std::to_string(k) + " = " + to_string(points[k]) +
+                      " is not on the front side (w > 0); the triangulation of T2 input is not implemented");
+}
+
+/// Degenerate input: dimension 0 or 1 (no triangle); duplicates found by sorting.
+template <class K>
+void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>& order, int dimension) {
+  const auto& pts = tr.points();
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Sign s = k.compare_xy(pts[a], pts[b]);
+    return s != ZERO ? s == NEGATIVE : a < b;
+  });
+  for (std::size_t m = 1, first = 0; m < order.size(); ++m) {
+    if (k.compare_xy(pts[order[first]], pts[order[m]]) == ZERO)
+      tr.add_duplicate(order[m], order[first]);
+    else
+      first = m;
+  }
+  tr.set_dimension(order.empty() ? -1 : dimension);
+  tr.finish();
+}
+
+}  // namespace detail
+
+//> delaunay
+/// The Delaunay triangulation of front points (w > 0) with the predicates of kernel K; see the
+/// file comment for the algorithm and the rule on degenerate input. Throws `Undefined` for a
+/// point that is not on the front side.
+template <class K = DelaunayKernel>
+Triangulation delaunay_with(std::vector<Point> points, K kernel = {}) {
+  using Index = Triangulation::Index;
+  detail::require_front(points);
+  std::vector<std::uint32_t> order = spatial_order(points);
+  Triangulation tr(std::move(points));
+  const auto& pts = tr.points();
+  const std::size_t n = order.size();
+  // The first triangle: the first point, the first other point, the first point off their line.
+  std::size_t ib = 1, ic = 0;
+  while (ib < n && kernel.compare_xy(pts[order[0]], pts[order[ib]]) == ZERO) ++ib;
+  if (ib >= n) {
+    detail::finish_degenerate(kernel, tr, order, 0);
+    return tr;
+  }
+  for (ic = ib + 1; ic < n; ++ic)
+    if (kernel.orient(pts[order[0]], pts[order[ib]], pts[order[ic]]) != ZERO) break;
+  if (ic >= n) {
+    detail::finish_degenerate(kernel, tr, order, 1);
+    return tr;
+  }
+  Index a = order[0], b = order[ib], c = order[ic];
+  if (kernel.orient(pts[a], pts[b], pts[c]) < 0) std::swap(a, b);
+  tr.make_triangle(a, b, c, n);
+  // The points skipped above (equal to the first or on the first line) are inserted next.
+  std::rotate(order.begin() + 1, order.begin() + ib, order.begin() + ib + 1);
+  std::rotate(order.begin() + 2, order.begin() + ic, order.begin() + ic + 1);
+  std::vector<Index> stack;
+  std::uint32_t rng = 2463534242u;
+  Index last = 0;
+  for (std::size_t m = 3; m < n; ++m) {
+    const Index p = order[m];
+    const Triangulation::Location loc = tr.locate(
+        pts[p], last, [&](const Point& u, const Point& v, const Point& w) { return kernel.orient(u, v, w); }, rng);
+    if (loc.kind == Triangulation::Location::vertex) {
+      const Index v = tr.vertex(loc.t, loc.i);
+      if (p < v) tr.rename_vertex(loc.t, v, p);
+      tr.add_duplicate(std::max(p, v), std::min(p, v));
+      continue;
+    }
+    const Index first_new = static_cast<Index>(tr.size());
+    if (loc.kind == Triangulation::Location::face) {
+      tr.insert_in_face(loc.t, p);
+      stack = {3 * loc.t, 3 * first_new, 3 * (first_new + 1)};
+    } else {
+      const Index u = tr.neighbor(loc.t, loc.i);
+      tr.insert_on_edge(loc.t, loc.i, p);
+      stack = {3 * loc.t, 3 * u, 3 * first_new, 3 * (first_new + 1)};
+    }
+    kernel.inserted(tr, p);
+    last = loc.t;
+    while (!stack.empty()) {  // Lawson: every edge opposite p, p is vertex 0 of its triangle
+      const Index t = stack.back() / 3;
+      stack.pop_back();
+      const Index u = tr.neighbor(t, 0);
+      if (!detail::in_conflict(kernel, tr, u, pts[p])) continue;
+      tr.flip(t, 0);
+      kernel.flipped(tr, t, u);
+      stack.push_back(3 * t);
+      stack.push_back(3 * u);
+    }
+  }
+  tr.finish();
+  return tr;
+}
+
+/// The Delaunay triangulation of front points with the exact predicates of the library.
+inline Triangulation delaunay(std::vector<Point> points) { return delaunay_with(std::move(points)); }
+/// The same for a span of points (copied into the triangulation).
+inline Triangulation delaunay(std::span<const Point> points) {
+  return delaunay_with(std::vector<Point>(points.begin(), points.end()));
+}
+//< delaunay
+
+}  // namespace t2

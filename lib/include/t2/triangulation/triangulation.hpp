@@ -1,0 +1,222 @@
+#pragma once
+/// @file triangulation.hpp
+/// @brief A compact triangulation of points of T² with an infinite vertex v∞: flat arrays of
+/// vertex and neighbour indices, insertion in a face and on an edge, edge flips, and point
+/// location by a remembering stochastic walk (seed 000, §5.3, Algorithm 9).
+///
+/// **Storage.** Triangle t owns the slots 3t, 3t+1, 3t+2 of two arrays of 32-bit indices, as
+/// the fastest planar codes store them (CGAL's triangulation data structure without pointers,
+/// Delaunator's and Fade's flat arrays): `vertex(t, i)` is an index into `points()` or
+/// `infinite`, and the *half-edge* `twin(3t + i)` = 3t' + j names the triangle t' across the
+/// edge opposite vertex i of t *and* the slot j of t' opposite the same edge, so a flip or a
+/// step of a walk never searches a triangle for its neighbour. 24 bytes per triangle, about two
+/// triangles per point: 48 bytes per point, plus the points (24 bytes each).
+///
+/// **Invariants** (checked by `valid()`, which the tests call after every construction):
+///  1. Every triangle (a, b, c) with three finite vertices turns counter-clockwise:
+///     orient(a, b, c) > 0 (exact). Vertex i is opposite the edge (vertex(t, i+1), vertex(t, i+2)),
+///     indices mod 3.
+///  2. `twin` is an involution without fixed points: twin(twin(e)) = e, and the edge opposite
+///     e in its triangle has the same endpoints as the edge opposite twin(e), in reverse order.
+///  3. While dimension() == 2, v∞ (`infinite`) is a vertex: every hull edge a → b
+///     (counter-clockwise around the hull) is the finite edge of exactly one *infinite
+///     triangle* (b, a, v∞), so the triangles form a triangulated sphere: with n vertices
+///     (v∞ included) there are 2n − 4 triangles and 3n − 6 edges (Euler). An infinite triangle
+///     (a, b, v∞) stands for the open half-plane to the left of a → b, outside the hull.
+///  4. No vertex appears twice (duplicates are merged before they become vertices).
+///
+/// **The remembering stochastic walk** (Devillers, Pion and Teillaud, "Walking in a
+/// triangulation", 2002). From a triangle, test the edges other than the one we came through,
+/// starting at a random one; cross the first edge that has p strictly on its far side; stop at
+/// a triangle no edge of which separates p (p is in the closed triangle) or at an infinite
+/// triangle (p is strictly outside that hull edge). *Termination on a Delaunay triangulation.*
+/// Lift each point s to ŝ = (s, |s|² + ε_s) with the symbolic perturbation of delaunay.hpp;
+/// the triangulation is the projection of the lower convex hull of the lifted points, and no
+/// four lifted points are coplanar. Let h_t be the affine function whose graph is the plane of
+/// the lifted triangle t. The lower hull is the graph of max_t h_t (a convex function), and on
+/// t' it is h_t'. Crossing from t to t' through the edge e with p strictly on the t' side: h_t
+/// and h_t' agree on the line of e, and h_t' ≥ h_t on the t' side with equality only if the
+/// planes coincide, i.e. if the four lifted vertices were coplanar — excluded. Hence h_t(p)
+/// strictly increases at every step, no triangle is visited twice and the walk ends after at
+/// most (number of triangles) steps. The randomness is not needed for termination here (it is
+/// for non-Delaunay triangulations, where a deterministic visibility walk can cycle); it keeps
+/// the expected length short on adversarial orders.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "t2/point.hpp"
+#include "t2/sign.hpp"
+
+namespace t2 {
+
+/// A triangulation of points of T² stored in flat index arrays (see the file comment).
+class Triangulation {
+ public:
+  using Index = std::uint32_t;                     ///< vertex, triangle and half-edge indices
+  static constexpr Index infinite = 0xFFFFFFFFu;  ///< the vertex index of v∞
+  static constexpr Index none = 0xFFFFFFFFu;      ///< "no triangle"
+
+  /// Where the walk found a point.
+  struct Location {
+    /// What the point hits.
+    enum Kind {
+      face,   ///< strictly inside a finite triangle, or strictly beyond the hull edge of an infinite one
+      edge,   ///< in the relative interior of an edge
+      vertex  ///< equal to a vertex
+    } kind = face;  ///< what the point hits
+    Index t = none;  ///< the triangle (for `face`, possibly infinite)
+    int i = 0;       ///< `edge`: the slot opposite the edge; `vertex`: the slot of the vertex
+  };
+
+  /// An empty triangulation (dimension −1).
+  Triangulation() = default;
+  /// A triangulation of `points` with no triangle yet (dimension −1); the algorithms fill it.
+  explicit Triangulation(std::vector<Point> points) : points_(std::move(points)) {}
+
+  /// The input points; vertex indices refer to them.
+  const std::vector<Point>& points() const { return points_; }
+  /// −1 no point, 0 all points equal, 1 all points collinear (no triangle), 2 triangulated.
+  int dimension() const { return dimension_; }
+  /// Number of triangles, infinite ones included.
+  std::size_t size() const { return v_.size() / 3; }
+  /// Vertex i (0, 1, 2) of triangle t: a point index or `infinite`.
+  Index vertex(Index t, int i) const { return v_[3 * t + i]; }
+  /// The half-edge across the edge opposite vertex i of t: 3t' + j (see the file comment).
+  Index twin(Index t, int i) const { return n_[3 * t + i]; }
+  /// The triangle across the edge opposite vertex i of t.
+  Index neighbor(Index t, int i) const { return n_[3 * t + i] / 3; }
+  /// True when v∞ is a vertex of t.
+  bool is_infinite(Index t) const {
+    return v_[3 * t] == infinite || v_[3 * t + 1] == infinite || v_[3 * t + 2] == infinite;
+  }
+  /// The slot of vertex v in t, or −1.
+  int slot(Index t, Index v) const {
+    for (int i = 0; i < 3; ++i)
+      if (v_[3 * t + i] == v) return i;
+    return -1;
+  }
+
+  /// The finite triangles as index triples, counter-clockwise, each rotated so that its
+  /// smallest index comes first.
+  std::vector<std::array<Index, 3>> finite_triangles() const;
+  /// The hull edges (a, b), counter-clockwise around the hull (the interior to their left).
+  std::vector<std::pair<Index, Index>> hull_edges() const;
+  /// The merged duplicates as pairs (dropped index, kept index), sorted; the kept point is the
+  /// one of smallest index among equal points.
+  const std::vector<std::pair<Index, Index>>& duplicates() const { return duplicates_; }
+  /// Bytes held by the arrays (capacities, not sizes): the memory figure of the benchmark.
+  std::size_t memory_bytes() const {
+    return points_.capacity() * sizeof(Point) + (v_.capacity() + n_.capacity()) * sizeof(Index) +
+           duplicates_.capacity() * sizeof(duplicates_[0]);
+  }
+  /// Checks invariants 1–4 of the file comment exactly; returns an empty string or what is wrong.
+  std::string validate() const;
+  /// True when validate() finds nothing wrong.
+  bool valid() const { return validate().empty(); }
+
+  //> triangulation-operations
+  /// Starts dimension 2 with the counter-clockwise triangle (a, b, c) and its three infinite
+  /// triangles; `reserve` is the expected number of points (storage for 2·reserve triangles).
+  void make_triangle(Index a, Index b, Index c, std::size_t reserve = 0);
+  /// Inserts point p strictly inside triangle t (finite), or strictly outside the hull edge of
+  /// the infinite triangle t. Afterwards p is vertex 0 of three triangles, whose first one is
+  /// returned as t itself and the other two as the last two triangles.
+  void insert_in_face(Index t, Index p);
+  /// Inserts point p in the relative interior of the edge opposite vertex i of t (that edge may
+  /// be a hull edge). Afterwards p is vertex 0 of four triangles: t, twin's triangle and the
+  /// last two.
+  void insert_on_edge(Index t, int i, Index p);
+  /// Flips the edge opposite vertex i of t, shared with t' = neighbor(t, i) whose opposite
+  /// vertex is d: with t = (p, q, r), the quadrilateral p, q, d, r becomes t = (p, q, d) and
+  /// t' = (p, d, r). The caller guarantees that the quadrilateral is strictly convex.
+  void flip(Index t, int i);
+  //< triangulation-operations
+
+  /// Locates p by the remembering stochastic walk from triangle `start` (see the file comment),
+  /// with the orientation predicate `orient(p, q, r)` of the kernel and a random state `rng`.
+  /// Requires dimension() == 2 and a finite p.
+  template <class Orient>
+  Location locate(const Point& p, Index start, Orient&& orient, std::uint32_t& rng) const;
+
+  /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
+  /// `from`); used when a duplicate of smaller index arrives.
+  void rename_vertex(Index t, Index from, Index to);
+  /// Records that `dropped` equals `kept` (finished by `finish`).
+  void add_duplicate(Index dropped, Index kept) { duplicates_.emplace_back(dropped, kept); }
+  /// Sets the dimension (used by the algorithms for degenerate input).
+  void set_dimension(int d) { dimension_ = d; }
+  /// Resolves duplicate chains (a kept index later dropped in favour of a smaller one) and sorts
+  /// the duplicate list; the algorithms call it once at the end.
+  void finish();
+  /// Point p of the input (no check).
+  const Point& point(Index p) const { return points_[p]; }
+
+ private:
+  static int next(int i) { return i == 2 ? 0 : i + 1; }
+  static int prev(int i) { return i == 0 ? 2 : i - 1; }
+  void link(Index e, Index f) {
+    n_[e] = f;
+    n_[f] = e;
+  }
+  void set(Index t, Index a, Index b, Index c) {
+    v_[3 * t] = a;
+    v_[3 * t + 1] = b;
+    v_[3 * t + 2] = c;
+  }
+  Index add_triangle() {
+    v_.resize(v_.size() + 3);
+    n_.resize(n_.size() + 3);
+    return static_cast<Index>(v_.size() / 3 - 1);
+  }
+  /// Rebuilds the k triangles tri[0..k) as the fan (p, ring[m], ring[m+1]) around p; ext[m] is the
+  /// half-edge outside the edge ring[m] → ring[m+1].
+  void make_fan(Index p, const Index* ring, const Index* ext, const Index* tri, int k);
+
+  std::vector<Point> points_;
+  std::vector<Index> v_;  // 3 vertex indices per triangle
+  std::vector<Index> n_;  // 3 twin half-edges per triangle
+  std::vector<std::pair<Index, Index>> duplicates_;
+  int dimension_ = -1;
+};
+
+template <class Orient>
+Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& orient, std::uint32_t& rng) const {
+  int from = -1;  // the slot of the edge we came through: p is strictly inside it
+  for (;;) {
+    const Index* v = &v_[3 * t];
+    const int inf = v[0] == infinite ? 0 : v[1] == infinite ? 1 : v[2] == infinite ? 2 : -1;
+    if (inf >= 0) {  // only at the start, or when we stepped out of the hull
+      if (from >= 0 || orient(points_[v[next(inf)]], points_[v[prev(inf)]], p) > 0) return {Location::face, t, inf};
+      t = n_[3 * t + inf] / 3;  // p may lie on the line of that edge: test all three edges there
+      from = -1;
+      continue;
+    }
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    const int r = static_cast<int>(rng % 3);
+    Sign o[3] = {POSITIVE, POSITIVE, POSITIVE};
+    bool moved = false;
+    for (int k = 0; k < 3 && !moved; ++k) {
+      const int i = (r + k) % 3;
+      if (i == from) continue;
+      o[i] = orient(points_[v[next(i)]], points_[v[prev(i)]], p);
+      if (o[i] < 0) {
+        from = static_cast<int>(n_[3 * t + i] % 3);
+        t = n_[3 * t + i] / 3;
+        moved = true;
+      }
+    }
+    if (moved) continue;
+    const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+    if (zeros == 0) return {Location::face, t, 0};
+    if (zeros == 1) return {Location::edge, t, o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2};
+    return {Location::vertex, t, o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2};  // the vertex off both lines
+  }
+}
+
+}  // namespace t2

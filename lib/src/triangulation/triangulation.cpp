@@ -1,0 +1,170 @@
+// The structural operations of t2::Triangulation (see triangulation.hpp for the invariants).
+#include "t2/triangulation/triangulation.hpp"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+#include "t2/lexicographic.hpp"
+#include "t2/orient.hpp"
+
+namespace t2 {
+
+void Triangulation::make_triangle(Index a, Index b, Index c, std::size_t reserve) {
+  v_.clear();
+  n_.clear();
+  v_.reserve(6 * std::max<std::size_t>(reserve, 3));
+  n_.reserve(6 * std::max<std::size_t>(reserve, 3));
+  for (int k = 0; k < 4; ++k) add_triangle();
+  // t0 = (a, b, c); across its edge opposite slot m lies the infinite triangle m + 1.
+  set(0, a, b, c);
+  set(1, c, b, infinite);  // outside b → c (opposite a)
+  set(2, a, c, infinite);  // outside c → a (opposite b)
+  set(3, b, a, infinite);  // outside a → b (opposite c)
+  link(0, 3 * 1 + 2);
+  link(1, 3 * 2 + 2);
+  link(2, 3 * 3 + 2);
+  // infinite triangles share the edges (v, v∞): (c, b, ∞) and (b, a, ∞) share b∞, etc.
+  link(3 * 1 + 0, 3 * 3 + 1);  // edge (b, ∞): opposite c in t1, opposite a in t3
+  link(3 * 1 + 1, 3 * 2 + 0);  // edge (∞, c): opposite b in t1, opposite a in t2
+  link(3 * 2 + 1, 3 * 3 + 0);  // edge (a, ∞)... opposite c in t2, opposite b in t3
+  dimension_ = 2;
+}
+
+void Triangulation::make_fan(Index p, const Index* ring, const Index* ext, const Index* tri, int k) {
+  for (int m = 0; m < k; ++m) {
+    set(tri[m], p, ring[m], ring[(m + 1) % k]);
+    link(3 * tri[m], ext[m]);
+  }
+  for (int m = 0; m < k; ++m) link(3 * tri[m] + 1, 3 * tri[(m + 1) % k] + 2);
+}
+
+//> insert-in-face
+void Triangulation::insert_in_face(Index t, Index p) {
+  const Index ring[3] = {v_[3 * t], v_[3 * t + 1], v_[3 * t + 2]};
+  const Index ext[3] = {n_[3 * t + 2], n_[3 * t], n_[3 * t + 1]};  // outside a→b, b→c, c→a
+  const Index t1 = add_triangle(), t2 = add_triangle();
+  const Index tri[3] = {t, t1, t2};
+  make_fan(p, ring, ext, tri, 3);
+}
+//< insert-in-face
+
+void Triangulation::insert_on_edge(Index t, int i, Index p) {
+  const Index e = n_[3 * t + i], u = e / 3;
+  const int j = static_cast<int>(e % 3);
+  const Index a = v_[3 * t + i], q = v_[3 * t + next(i)], r = v_[3 * t + prev(i)], d = v_[3 * u + j];
+  // Around p counter-clockwise: q, d, r, a (u = (d, r, q) lies beyond q → r).
+  const Index ring[4] = {q, d, r, a};
+  const Index ext[4] = {n_[3 * u + next(j)], n_[3 * u + prev(j)], n_[3 * t + next(i)], n_[3 * t + prev(i)]};
+  const Index t2 = add_triangle(), t3 = add_triangle();
+  const Index tri[4] = {u, t2, t3, t};
+  make_fan(p, ring, ext, tri, 4);
+}
+
+//> flip
+void Triangulation::flip(Index t, int i) {
+  const Index e = n_[3 * t + i], u = e / 3;
+  const int j = static_cast<int>(e % 3);
+  const Index p = v_[3 * t + i], q = v_[3 * t + next(i)], r = v_[3 * t + prev(i)], d = v_[3 * u + j];
+  const Index qd = n_[3 * u + next(j)], dr = n_[3 * u + prev(j)];  // beyond q→d and d→r
+  const Index rp = n_[3 * t + next(i)], pq = n_[3 * t + prev(i)];  // beyond r→p and p→q
+  set(t, p, q, d);
+  set(u, p, d, r);
+  link(3 * t, qd);
+  link(3 * t + 2, pq);
+  link(3 * u, dr);
+  link(3 * u + 1, rp);
+  link(3 * t + 1, 3 * u + 2);  // the new edge p–d
+}
+//< flip
+
+void Triangulation::rename_vertex(Index t, Index from, Index to) {
+  const Index start = t;
+  do {
+    const int k = slot(t, from);
+    v_[3 * t + k] = to;
+    t = n_[3 * t + next(k)] / 3;
+  } while (t != start);
+}
+
+void Triangulation::finish() {
+  std::unordered_map<Index, Index> kept;
+  for (auto [d, k] : duplicates_) kept[d] = k;
+  for (auto& [d, k] : duplicates_)
+    for (auto it = kept.find(k); it != kept.end(); it = kept.find(k)) k = it->second;
+  std::sort(duplicates_.begin(), duplicates_.end());
+}
+
+std::vector<std::array<Triangulation::Index, 3>> Triangulation::finite_triangles() const {
+  std::vector<std::array<Index, 3>> out;
+  out.reserve(size());
+  for (Index t = 0; t < size(); ++t) {
+    if (is_infinite(t)) continue;
+    const Index* v = &v_[3 * t];
+    const int m = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    out.push_back({v[m], v[next(m)], v[prev(m)]});
+  }
+  return out;
+}
+
+std::vector<std::pair<Triangulation::Index, Triangulation::Index>> Triangulation::hull_edges() const {
+  std::vector<std::pair<Index, Index>> out;
+  for (Index t = 0; t < size(); ++t) {
+    const int k = slot(t, infinite);
+    if (k >= 0) out.emplace_back(v_[3 * t + prev(k)], v_[3 * t + next(k)]);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string Triangulation::validate() const {
+  if (v_.size() != n_.size() || v_.size() % 3 != 0) return "arrays of different or non-multiple-of-3 sizes";
+  if (dimension_ < 2) return v_.empty() ? "" : "triangles in dimension < 2";
+  const Index np = static_cast<Index>(points_.size());
+  std::vector<Index> count(points_.size() + 1, 0);  // last: v∞
+  for (Index e = 0; e < v_.size(); ++e) {
+    const Index v = v_[e], t = e / 3;
+    if (v != infinite && v >= np) return "vertex index out of range in triangle " + std::to_string(t);
+    ++count[v == infinite ? np : v];
+    const Index f = n_[e];
+    if (f >= n_.size() || n_[f] != e || f / 3 == t) return "twin is not an involution at half-edge " + std::to_string(e);
+    const int i = static_cast<int>(e % 3), j = static_cast<int>(f % 3);
+    const Index u = f / 3;
+    if (v_[3 * t + next(i)] != v_[3 * u + prev(j)] || v_[3 * t + prev(i)] != v_[3 * u + next(j)])
+      return "twin edges with different endpoints at half-edge " + std::to_string(e);
+    if (i == 0 && !is_infinite(t) && orient(points_[v_[e]], points_[v_[e + 1]], points_[v_[e + 2]]) != POSITIVE)
+      return "triangle " + std::to_string(t) + " is not counter-clockwise";
+  }
+  if (count[np] == 0) return "v∞ is not a vertex";
+  // Each vertex's triangles form one cycle (its star), so no vertex is pinched.
+  std::vector<Index> first(points_.size() + 1, none);
+  for (Index e = 0; e < v_.size(); ++e) {
+    const Index v = v_[e] == infinite ? np : v_[e];
+    if (first[v] == none) first[v] = e / 3;
+  }
+  Index vertices = 0;
+  for (Index v = 0; v <= np; ++v) {
+    if (count[v] == 0) continue;
+    ++vertices;
+    const Index id = v == np ? infinite : v;
+    Index t = first[v], steps = 0;
+    do {
+      t = n_[3 * t + next(slot(t, id))] / 3;
+      ++steps;
+    } while (t != first[v] && steps <= count[v]);
+    if (steps != count[v]) return "the triangles around vertex " + std::to_string(v) + " are not one cycle";
+  }
+  if (size() != 2 * std::size_t(vertices) - 4) return "Euler's formula fails: T != 2V - 4";
+  // No two vertices at the same point.
+  std::vector<Index> used;
+  for (Index v = 0; v < np; ++v)
+    if (count[v] != 0) used.push_back(v);
+  std::sort(used.begin(), used.end(),
+            [&](Index a, Index b) { return compare_lexicographic(points_[a], points_[b]) == NEGATIVE; });
+  for (std::size_t k = 1; k < used.size(); ++k)
+    if (compare_lexicographic(points_[used[k - 1]], points_[used[k]]) == ZERO)
+      return "vertices " + std::to_string(used[k - 1]) + " and " + std::to_string(used[k]) + " are the same point";
+  return "";
+}
+
+}  // namespace t2

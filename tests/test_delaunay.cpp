@@ -1,0 +1,203 @@
+// t2::delaunay against CGAL's Delaunay_triangulation_2 (Epick) — the triangle sets must be
+// equal — and against the exact certificates of delaunay_certificates.hpp, on uniform, normal,
+// grid, circle, duplicate, collinear and "classroom" input; the result must not depend on the
+// order of the input.
+#include <gtest/gtest.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <numeric>
+#include <random>
+
+#include "delaunay_certificates.hpp"
+#include "delaunay_inputs.hpp"
+
+namespace t2 {
+namespace {
+
+using testing::expect_delaunay;
+using testing::scale;
+using testing::Tri;
+using testing::triangle_set;
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<Triangulation::Index, K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+using CgalDelaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
+
+/// CGAL's finite triangles as index triples, counter-clockwise, smallest first, sorted.
+std::vector<Tri> cgal_triangles(const std::vector<Point>& pts) {
+  std::vector<std::pair<K::Point_2, Triangulation::Index>> in;
+  for (Triangulation::Index k = 0; k < pts.size(); ++k) in.emplace_back(K::Point_2(pts[k].x(), pts[k].y()), k);
+  CgalDelaunay dt(in.begin(), in.end());
+  std::vector<Tri> out;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    Tri t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void expect_cgal_equal(const std::vector<Point>& pts) {
+  const Triangulation tr = delaunay(pts);
+  expect_delaunay(tr, pts.size() <= 5000);
+  const auto ours = triangle_set(tr), theirs = cgal_triangles(pts);
+  EXPECT_EQ(ours.size(), theirs.size());
+  EXPECT_TRUE(ours == theirs) << "the triangle sets of t2 and CGAL differ";
+}
+
+TEST(Delaunay, UniformEqualsCgal) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::uniform_points(3000 * scale(), seed));
+}
+
+TEST(Delaunay, NormalEqualsCgal) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::normal_points(3000 * scale(), seed));
+}
+
+TEST(Delaunay, SmallSetsEqualCgal) {
+  for (std::uint64_t seed = 1; seed <= 300; ++seed)
+    expect_cgal_equal(testing::uniform_points(3 + seed % 20, seed));
+}
+
+// CGAL breaks cocircular ties with the same symbolic perturbation, so even the degenerate
+// inputs must give the same triangle set.
+TEST(Delaunay, GridEqualsCgal) {
+  for (std::size_t n : {4, 9, 10, 100, 2500}) expect_cgal_equal(testing::grid_points(n * scale(), n));
+}
+
+TEST(Delaunay, CocircularLatticeEqualsCgal) {
+  expect_cgal_equal(testing::lattice_circle_points(0, 1));
+  expect_cgal_equal(testing::lattice_circle_points(200, 2));
+}
+
+TEST(Delaunay, RoundedCircleEqualsCgal) { expect_cgal_equal(testing::circle_points(1000 * scale(), 3)); }
+
+TEST(Delaunay, ClassroomExample) {
+  const auto pts = testing::classroom_points(16);
+  expect_cgal_equal(pts);
+}
+
+TEST(Delaunay, ClusteredEqualsCgal) { expect_cgal_equal(testing::clustered_points(3000 * scale(), 5)); }
+
+// The same point set in another order gives the same triangles (renamed).
+void expect_order_independent(const std::vector<Point>& pts, std::uint64_t seed) {
+  std::vector<Triangulation::Index> perm(pts.size());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::shuffle(perm.begin(), perm.end(), std::mt19937_64(seed));
+  std::vector<Point> shuffled;
+  for (auto k : perm) shuffled.push_back(pts[k]);
+  const auto a = triangle_set(delaunay(pts));
+  std::vector<Tri> b;
+  for (const Tri& t : delaunay(shuffled).finite_triangles()) b.push_back(testing::renamed(t, perm));
+  std::sort(b.begin(), b.end());
+  EXPECT_TRUE(a == b);
+}
+
+TEST(Delaunay, CocircularIndependentOfOrder) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    expect_order_independent(testing::grid_points(400, seed), seed);
+    expect_order_independent(testing::lattice_circle_points(50, seed), seed);
+  }
+}
+
+TEST(Delaunay, DuplicatesMergedAndReported) {
+  auto pts = testing::uniform_points(500, 7);
+  const std::size_t n = pts.size();
+  std::mt19937_64 rng(8);
+  for (std::size_t k = 0; k < 300; ++k) pts.push_back(pts[rng() % pts.size()]);
+  pts.push_back(Point(2, 2 * pts[0].x(), 2 * pts[0].y()));  // the same point, scaled
+  const Triangulation tr = delaunay(pts);
+  expect_delaunay(tr);
+  EXPECT_EQ(tr.duplicates().size(), pts.size() - n);
+  // Without the duplicates: the triangles of the first n points.
+  const std::vector<Point> first(pts.begin(), pts.begin() + n);
+  EXPECT_TRUE(triangle_set(tr) == triangle_set(delaunay(first)));
+}
+
+TEST(Delaunay, DuplicatesOnGrid) {
+  auto pts = testing::grid_points(100, 1);
+  auto more = testing::grid_points(100, 2);
+  pts.insert(pts.end(), more.begin(), more.end());
+  const Triangulation tr = delaunay(pts);
+  expect_delaunay(tr);
+  EXPECT_EQ(tr.duplicates().size(), 100u);
+  for (auto [d, k] : tr.duplicates()) EXPECT_GE(d, 100u);
+}
+
+TEST(Delaunay, CollinearGivesNoTriangle) {
+  std::vector<Point> pts;
+  for (int k = 0; k < 50; ++k) pts.push_back(Point::cartesian(k % 7 * 3.0 + 1, k % 7 * 6.0 - 2));
+  const Triangulation tr = delaunay(pts);
+  EXPECT_EQ(tr.dimension(), 1);
+  EXPECT_TRUE(tr.finite_triangles().empty());
+  EXPECT_TRUE(tr.hull_edges().empty());
+  EXPECT_EQ(tr.duplicates().size(), 43u);
+  expect_delaunay(tr);
+  // One point off the line: a fan of 6 triangles.
+  pts.push_back(Point::cartesian(0, 5));
+  const Triangulation fan = delaunay(pts);
+  expect_delaunay(fan);
+  EXPECT_EQ(fan.finite_triangles().size(), 6u);
+}
+
+TEST(Delaunay, DegenerateSizes) {
+  EXPECT_EQ(delaunay(std::vector<Point>{}).dimension(), -1);
+  const Triangulation one = delaunay(std::vector<Point>{Point::cartesian(1, 2), Point::cartesian(1, 2)});
+  EXPECT_EQ(one.dimension(), 0);
+  EXPECT_EQ(one.duplicates().size(), 1u);
+  const std::vector<Point> tri = {Point::cartesian(0, 0), Point::cartesian(0, 1), Point::cartesian(1, 0)};
+  const Triangulation t = delaunay(std::span<const Point>(tri));
+  expect_delaunay(t);
+  EXPECT_EQ(triangle_set(t), (std::vector<Tri>{{0, 2, 1}}));
+}
+
+TEST(Delaunay, CollinearThenCocircular) {
+  // Many points on the hull line y = 0 and the x axis, with a square around: hull with collinear
+  // points, edges split on the hull.
+  std::vector<Point> pts;
+  for (int k = -20; k <= 20; ++k) pts.push_back(Point::cartesian(k, 0));
+  for (int k = -20; k <= 20; ++k) pts.push_back(Point::cartesian(k, 20));
+  for (int k = 1; k < 20; ++k) pts.push_back(Point::cartesian(-20, k));
+  for (int k = 1; k < 20; ++k) pts.push_back(Point::cartesian(0, k));
+  expect_cgal_equal(pts);
+}
+
+TEST(Delaunay, RejectsPointsNotInFront) {
+  const std::vector<Point> pts = {Point::cartesian(0, 0), Point(-1, 0, 1), Point::cartesian(1, 0)};
+  EXPECT_THROW(delaunay(pts), Undefined);
+  const std::vector<Point> inf = {Point::cartesian(0, 0), Point::at_infinity(0, 1), Point::cartesian(1, 0)};
+  EXPECT_THROW(delaunay(inf), Undefined);
+}
+
+// The trace hooks of a kernel see every insertion and every flip.
+struct CountingKernel : DelaunayKernel {
+  std::size_t inserted_count = 0, flips = 0;
+  void inserted(const Triangulation&, Triangulation::Index) { ++inserted_count; }
+  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++flips; }
+};
+
+TEST(Delaunay, KernelTraceHooks) {
+  CountingKernel k;
+  const auto pts = testing::uniform_points(1000, 11);
+  struct Ref {
+    CountingKernel* k;
+    static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
+    static Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
+      return t2::in_circle(a, b, c, d);
+    }
+    static Sign compare_xy(const Point& p, const Point& q) { return t2::compare_xy(p, q); }
+    void inserted(const Triangulation& t, Triangulation::Index v) { k->inserted(t, v); }
+    void flipped(const Triangulation& t, Triangulation::Index a, Triangulation::Index b) { k->flipped(t, a, b); }
+  };
+  const Triangulation tr = delaunay_with(pts, Ref{&k});
+  EXPECT_EQ(k.inserted_count, pts.size() - 3);  // the first triangle is not an insertion
+  EXPECT_GT(k.flips, pts.size());               // about 3 flips per point on random input
+  EXPECT_TRUE(triangle_set(tr) == triangle_set(delaunay(pts)));
+}
+
+}  // namespace
+}  // namespace t2
