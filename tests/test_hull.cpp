@@ -1,0 +1,144 @@
+// t2::convex_hull on front-only input against CGAL::convex_hull_2 (exact kernel), every
+// algorithm, as cyclic sequences of points. CGAL is the oracle here only.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/convex_hull_2.h>
+#include <gtest/gtest.h>
+
+#include "hull_testing.hpp"
+#include "t2/gen/generate.hpp"
+#include "testing.hpp"
+
+namespace t2 {
+namespace {
+
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using gen::Kind;
+using testing::all_algorithms;
+using testing::at;
+using testing::same_cycle;
+
+// The front point [w, x, y] as CGAL's exact point (x/w, y/w).
+Epeck::Point_2 cgal(const Point& p) {
+  return {Epeck::FT(testing::q(p.x())) / Epeck::FT(testing::q(p.w())),
+          Epeck::FT(testing::q(p.y())) / Epeck::FT(testing::q(p.w()))};
+}
+
+// CGAL's hull, as points of P (each CGAL vertex matched to an input point it equals).
+std::vector<Point> cgal_hull(const std::vector<Point>& P) {
+  std::vector<Epeck::Point_2> in, out;
+  for (const auto& p : P) in.push_back(cgal(p));
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
+  std::vector<Point> h;
+  for (const auto& c : out)
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (in[i] == c) {
+        h.push_back(P[i]);
+        break;
+      }
+  return h;
+}
+
+void expect_like_cgal(const std::vector<Point>& P, const std::string& what) {
+  const auto want = cgal_hull(P);
+  for (HullAlgorithm a : all_algorithms()) {
+    const auto got = at(P, convex_hull(P, a));
+    EXPECT_TRUE(same_cycle(got, want)) << what << ", " << name(a) << ": got " << got.size() << " vertices "
+                                       << testing::text(got) << "\nCGAL: " << testing::text(want);
+  }
+}
+
+void check_kind(Kind k, std::size_t n, int seeds, bool cartesian = false) {
+  for (int s = 1; s <= seeds; ++s) {
+    gen::Options o;
+    o.n = n;
+    o.seed = static_cast<std::uint64_t>(s);
+    o.cartesian = cartesian;
+    expect_like_cgal(gen::points(k, o), std::string(gen::name(k)) + " seed " + std::to_string(s));
+  }
+}
+
+const int kScale = testing::scale();
+
+TEST(HullCgal, Uniform) { check_kind(Kind::uniform, 2000, 5 * kScale); }
+TEST(HullCgal, DiskKuzminNormal) {
+  check_kind(Kind::disk, 2000, 3 * kScale);
+  check_kind(Kind::kuzmin, 2000, 3 * kScale);
+  check_kind(Kind::normal, 2000, 3 * kScale);
+}
+TEST(HullCgal, OnCircleExactAndRounded) {
+  check_kind(Kind::circle, 1000, 2 * kScale);        // every point a vertex (all exactly cocircular)
+  check_kind(Kind::circle, 1000, 2 * kScale, true);  // rounded: nearly cocircular, a few inside
+}
+TEST(HullCgal, CollinearHeavy) {
+  check_kind(Kind::segment, 500, 3 * kScale);
+  check_kind(Kind::boundary, 1000, 3 * kScale);
+  // Many points on a few lines, with random points between.
+  for (int s = 1; s <= 3 * kScale; ++s) {
+    gen::Options o;
+    o.n = 300;
+    o.seed = static_cast<std::uint64_t>(s);
+    auto P = gen::points(Kind::boundary, o);
+    auto Q = gen::points(Kind::segment, o);
+    auto R = gen::points(Kind::uniform, o);
+    P.insert(P.end(), Q.begin(), Q.end());
+    P.insert(P.end(), R.begin(), R.begin() + 20);
+    expect_like_cgal(P, "mixed collinear seed " + std::to_string(s));
+  }
+}
+TEST(HullCgal, DuplicateHeavyAndGrid) {
+  check_kind(Kind::duplicates, 2000, 3 * kScale);
+  check_kind(Kind::grid, 2000, 3 * kScale);
+  check_kind(Kind::grid, 30, 10 * kScale);  // 6×6 grids: most points collinear or repeated
+}
+TEST(HullCgal, TinyInputs) {
+  const Point a = Point::cartesian(1, 2), b = Point::cartesian(3, -1);
+  EXPECT_TRUE(convex_hull(std::vector<Point>{}).empty());
+  for (HullAlgorithm alg : all_algorithms()) {
+    EXPECT_EQ(convex_hull(std::vector<Point>{a}, alg), (std::vector<std::size_t>{0}));
+    EXPECT_EQ(convex_hull(std::vector<Point>{a, Point(2, 2, 4), a}, alg).size(), 1u);
+    const auto two = at({a, b, a}, convex_hull(std::vector<Point>{a, b, a}, alg));
+    EXPECT_TRUE(same_cycle(two, {a, b})) << name(alg);
+  }
+}
+
+// A kernel that counts its orientation tests, and a trace that records the steps: the
+// algorithms are templates on both, and give the same answer through them.
+struct CountingKernel {
+  static inline long calls = 0;
+  static Sign orient(const Point& p, const Point& q, const Point& r) {
+    ++calls;
+    return t2::orient(p, q, r);
+  }
+  static bool equal(const Point& p, const Point& q) { return p == q; }
+};
+
+struct Recorder {
+  std::vector<HullStep> steps;
+  std::vector<std::size_t> last;
+  void operator()(HullStep s, std::size_t, std::span<const std::size_t> chain) {
+    steps.push_back(s);
+    last.assign(chain.begin(), chain.end());
+  }
+};
+
+TEST(HullCgal, KernelAndTraceParameters) {
+  gen::Options o;
+  o.n = 500;
+  const auto P = gen::points(Kind::both_sides, o);
+  const auto ref = convex_hull(P, HullAlgorithm::merge);
+  for (HullAlgorithm a : all_algorithms()) {
+    CountingKernel::calls = 0;
+    Recorder rec;
+    const auto h = convex_hull<CountingKernel>(P, a, rec);
+    EXPECT_TRUE(same_cycle(at(P, h), at(P, ref))) << name(a);
+    EXPECT_GT(CountingKernel::calls, 500) << name(a);
+    EXPECT_FALSE(rec.steps.empty()) << name(a);
+  }
+  Recorder rec;  // Graham's last step leaves the hull on its stack
+  const auto F = gen::points(Kind::uniform, o);
+  const auto h = convex_hull(F, HullAlgorithm::graham, rec);
+  EXPECT_EQ(rec.last, h);
+}
+
+}  // namespace
+}  // namespace t2
