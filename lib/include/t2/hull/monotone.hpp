@@ -48,44 +48,89 @@ std::vector<std::size_t> monotone_chain(std::span<const Point> P, std::vector<st
   return h;
 }
 
-/// The Akl–Toussaint throw-away before the monotone chain: the extreme points in x and y
-/// (in the chart's order) span a quadrilateral; the points strictly inside it are no hull
-/// vertices and are dropped in one pass of four Δ each. Same answer as `monotone_chain`.
+namespace detail {
+
+// The throw-away polygon of front points with w = 1 (the common case): the points extreme in
+// the eight directions ±x, ±y, ±x±y, counter-clockwise. The diagonal sums are rounded, which
+// only makes a vertex a little less extreme: any input points will do as vertices.
+inline std::vector<std::size_t> octagon(std::span<const Point> P) {
+  std::size_t e[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  double best[8];
+  for (int k = 0; k < 8; ++k) best[k] = -1e308;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double x = P[i].x(), y = P[i].y();
+    const double v[8] = {-x, -x - y, -y, x - y, x, x + y, y, y - x};  // counter-clockwise from the left
+    for (int k = 0; k < 8; ++k)
+      if (v[k] > best[k]) best[k] = v[k], e[k] = i;
+  }
+  return {std::begin(e), std::end(e)};
+}
+
+}  // namespace detail
+
+/// The Akl–Toussaint throw-away before the monotone chain: points extreme in a few directions
+/// (in the chart's order: x and y; for plain front points also the diagonals) span a polygon
+/// Q, and the points strictly inside it are no hull vertices: they are dropped in one pass.
+/// A point is dropped when it lies strictly left of every edge of Q (Δ > 0 on each): then the
+/// edges wind around it, so it lies inside the hull of Q's vertices, whatever the order they
+/// came in. Most points are dropped by four plain comparisons first: a box whose corners pass
+/// that test lies inside Q (the set left of every edge is convex). Same answer as
+/// `monotone_chain`.
 template <class K = ExactKernel, class Tr = NoTrace>
 std::vector<std::size_t> akl_toussaint(std::span<const Point> P, const Chart& chart, Tr&& trace = {}) {
   const ChartOrder<K> order{chart};
   std::vector<std::size_t> keep;
   if (P.empty()) return keep;
-  // The extremes: least and greatest in (x, y), least and greatest in (y, x).
-  std::size_t e[4] = {0, 0, 0, 0};
-  const auto yx = [&](const Point& p, const Point& q) {
-    // (y, x) order: y by Δ(q, p, X∞), then x.
-    const Sign s = chart.front && p.w() == 1 && q.w() == 1
-                       ? (p.y() < q.y() ? NEGATIVE : (p.y() > q.y() ? POSITIVE : ZERO))
-                       : orient_to<K>(p, q, chart.x_inf);
-    return s != ZERO ? s : order.compare(p, q);
-  };
-  for (std::size_t i = 1; i < P.size(); ++i) {
-    if (order.less(P[i], P[e[0]])) e[0] = i;
-    if (order.less(P[e[2]], P[i])) e[2] = i;
-    if (yx(P[i], P[e[1]]) < 0) e[1] = i;
-    if (yx(P[e[3]], P[i]) < 0) e[3] = i;
-  }
-  // Counter-clockwise: leftmost, lowest, rightmost, highest; repeated corners dropped.
-  std::vector<std::size_t> q;
-  for (std::size_t c : e)
-    if (q.empty() || !K::equal(P[q.back()], P[c])) q.push_back(c);
-  while (q.size() > 1 && K::equal(P[q.back()], P[q.front()])) q.pop_back();
-  keep.reserve(P.size() / 2);
-  if (q.size() < 3) {
-    for (std::size_t i = 0; i < P.size(); ++i) keep.push_back(i);
-  } else {
-    for (std::size_t i = 0; i < P.size(); ++i) {
-      bool inside = true;
-      for (std::size_t k = 0; k < q.size() && inside; ++k)
-        inside = K::orient(P[q[k]], P[q[(k + 1) % q.size()]], P[i]) > 0;
-      if (!inside) keep.push_back(i);
+  const bool plain = chart.front && std::all_of(P.begin(), P.end(), [](const Point& p) { return p.w() == 1; });
+  std::vector<std::size_t> e;
+  if (plain) {
+    e = detail::octagon(P);
+  } else {  // least and greatest in (x, y), least and greatest in (y, x)
+    std::size_t m[4] = {0, 0, 0, 0};
+    const auto yx = [&](const Point& p, const Point& q) {
+      const Sign s = orient_to<K>(p, q, chart.x_inf);
+      return s != ZERO ? s : order.compare(p, q);
+    };
+    for (std::size_t i = 1; i < P.size(); ++i) {
+      if (order.less(P[i], P[m[0]])) m[0] = i;
+      if (order.less(P[m[2]], P[i])) m[2] = i;
+      if (yx(P[i], P[m[1]]) < 0) m[1] = i;
+      if (yx(P[m[3]], P[i]) < 0) m[3] = i;
     }
+    e.assign(std::begin(m), std::end(m));
+  }
+  std::vector<Point> Q;  // repeated corners dropped
+  for (std::size_t c : e)
+    if (Q.empty() || !K::equal(Q.back(), P[c])) Q.push_back(P[c]);
+  while (Q.size() > 1 && K::equal(Q.back(), Q.front())) Q.pop_back();
+  const auto inside = [&](const Point& p) {
+    for (std::size_t k = 0; k < Q.size(); ++k)
+      if (K::orient(Q[k], Q[(k + 1) % Q.size()], p) <= 0) return false;
+    return true;
+  };
+  // The box: within the vertices extreme in x (left: −x and the two left diagonals; and so on),
+  // shrunk a little at a time until its four corners pass.
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  bool box = false;
+  if (plain && Q.size() >= 3) {
+    const auto X = [&](int k) { return P[e[static_cast<std::size_t>(k)]].x(); };
+    const auto Y = [&](int k) { return P[e[static_cast<std::size_t>(k)]].y(); };
+    x0 = std::max({X(7), X(0), X(1)}), x1 = std::min({X(3), X(4), X(5)});
+    y0 = std::max({Y(1), Y(2), Y(3)}), y1 = std::min({Y(5), Y(6), Y(7)});
+    for (double f = 1.0 / 256; f < 0.5 && !box && x0 < x1 && y0 < y1; f *= 2) {
+      box = inside(Point::cartesian(x0, y0)) && inside(Point::cartesian(x1, y0)) && inside(Point::cartesian(x1, y1)) &&
+            inside(Point::cartesian(x0, y1));
+      if (!box) {
+        const double dx = f * (x1 - x0), dy = f * (y1 - y0);
+        x0 += dx, x1 -= dx, y0 += dy, y1 -= dy;
+      }
+    }
+  }
+  keep.reserve(P.size() / 8);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const Point& p = P[i];
+    if (box && p.x() > x0 && p.x() < x1 && p.y() > y0 && p.y() < y1) continue;  // inside the box
+    if (Q.size() < 3 || !inside(p)) keep.push_back(i);
   }
   return monotone_chain<K>(P, std::move(keep), chart, trace);
 }
