@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -264,6 +265,108 @@ void sides(const std::filesystem::path& dir) {
   dr::save(fig, sphere, dir / "sides-sphere.svg");
 }
 
+// ---------------------------------------------------------------------------------------------
+// 6. Duality.
+
+void duality(const std::filesystem::path& dir) {
+  std::cout << "\n== 6. Duality\n";
+  //> duality-demo
+  const ExactPoint p(1, 1, 0), q(2, 1, 1), r(1, 0, 1);  // three points of the line x + y = 1
+  const t2::ExactLine P = t2::dual(p), Q = t2::dual(q), R = t2::dual(r);  // their dual lines
+  const ExactPoint z = t2::meet(P, Q);
+  std::cout << "orient(p, q, r) = " << sym(t2::orient(p, q, r)) << "   P = " << t2::to_string(P)
+            << "  Q = " << t2::to_string(Q) << "  R = " << t2::to_string(R) << "\n";
+  std::cout << "meet(P, Q) = " << t2::to_string(z) << "   side(R, meet(P, Q)) = "
+            << sym(t2::side(R, z)) << "   dual(join(p, q)) == meet(P, Q): "
+            << (t2::dual(t2::join(p, q)) == z) << "\n";
+  //< duality-demo
+  require(t2::orient(p, q, r) == t2::ZERO && t2::side(R, z) == t2::ZERO, "collinear <-> concurrent");
+  const ExactPoint s(1, 1, 2);
+  std::cout << "side(P, s) = " << sym(t2::side(P, s)) << " = side(dual(s), dual(P)) = "
+            << sym(t2::side(t2::dual(s), t2::dual(P))) << "\n";
+  require(t2::side(P, s) == t2::side(t2::dual(s), t2::dual(P)), "duality keeps sides");
+
+  dr::Figure fig;
+  fig.add(t2::join(p, r), dr::Style().color("#999999").label("join(p, r)"));
+  for (const auto& [pt, name, colour] : {std::tuple{p, "p", "#1f77b4"}, std::tuple{q, "q", "#2ca02c"},
+                                        std::tuple{r, "r", "#d62728"}}) {
+    fig.add(pt, dr::Style().color(colour).label(name));
+    fig.add(t2::dual(pt), dr::Style().color(colour).dash({5, 3}));
+  }
+  fig.add(z, dr::Style().color("#000000").marker(dr::Marker::square).label("meet(P, Q)"));
+  dr::PlaneView plane;
+  plane.half_width = 3;
+  plane.axes = true;
+  dr::SphereView sphere;
+  sphere.lat = 35;
+  sphere.lon = -30;
+  dr::save(fig, plane, dir / "duality-plane.svg");
+  dr::save(fig, sphere, dir / "duality-sphere.svg");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 7. A map that sends a line to Omega: perspective, and clipping behind the eye.
+
+void perspective(const std::filesystem::path& dir) {
+  std::cout << "\n== 7. Perspective: a line sent to Omega\n";
+  //> perspective-map
+  // The eye is the origin and looks along +y; the image line is y = 1. M sends [w, x, y] to
+  // [y, x, -w]: a front point (x, y) goes to (x/y, -1/y), whose first coordinate is where the
+  // ray from the eye through it meets the image line. The eye's line y = 0 goes to Omega.
+  const t2::ExactAffine M({{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}});
+  //< perspective-map
+  //> perspective-demo
+  const ExactPoint a = ExactPoint::cartesian(-1, 2), b = ExactPoint::cartesian(2, -1);  // b: behind
+  const ExactPoint Ma = t2::transform(M, a), Mb = t2::transform(M, b);
+  const t2::ExactSegment image = t2::transform(M, t2::ExactSegment(a, b));
+  std::cout << "det M = " << sym(M.determinant_sign()) << "   M(<0, 0, 1>) = "
+            << t2::to_string(t2::transform(M, t2::ExactLine(0, 0, 1))) << "\n";
+  std::cout << "M a = " << t2::to_string(Ma) << " (" << side_name(t2::side_of(Ma)) << ")   M b = "
+            << t2::to_string(Mb) << " (" << side_name(t2::side_of(Mb)) << ")\n";
+  std::cout << "image of segment ab leaves the front at " << t2::to_string(t2::point_at_infinity(image))
+            << "; the front part runs from u = -1/2 to u = +infinity\n";
+  //< perspective-demo
+  require(M.determinant_sign() == t2::POSITIVE && t2::transform(M, t2::ExactLine(0, 0, 1)) == t2::omega<Integer>(),
+          "M keeps orientation and sends y = 0 to Omega");
+  require(t2::side_of(Ma) == t2::Side::front && t2::side_of(Mb) == t2::Side::back, "front and behind");
+  // The crossing of ab with the eye's line is (1, 0); its image is the direction (1, -1): the
+  // image coordinate x/y grows without bound as a point of ab approaches (1, 0) from the front.
+  require(t2::point_at_infinity(image) == ExactPoint(0, 1, -1), "ab leaves through [0, 1, -1]");
+  require(t2::on_segment(a, b, ExactPoint::cartesian(1, 0)), "ab crosses y = 0 at (1, 0)");
+  // The classical (unsigned) projective view divides by y alone: b "appears" at u = x/y = -2.
+  std::cout << "dividing without the sign puts b at u = " << b.x() * b.w() << "/" << b.y() * b.w()
+            << " = -2, in front of the eye\n";
+
+  dr::Figure scene;
+  scene.add(t2::ExactLine(0, 0, 1), dr::Style().color("#999999").dash({5, 3}).label("eye's line"));
+  scene.add(t2::ExactLine(-1, 0, 1), dr::Style().color("#bbbbbb").label("image line"));
+  scene.segment(a, ExactPoint::cartesian(1, 0), dr::Style().color("#2ca02c").width(2));
+  scene.segment(ExactPoint::cartesian(1, 0), b, dr::Style().color("#d62728").width(2).dash({4, 3}));
+  scene.add(ExactPoint::cartesian(0, 0), dr::Style().marker(dr::Marker::square).label("eye"));
+  scene.add(a, dr::Style().label("a"));
+  scene.add(b, dr::Style().label("b (behind)"));
+  dr::Figure img;
+  img.add(t2::transform(M, t2::ExactLine(-1, 0, 1)), dr::Style().color("#bbbbbb").label("M(image line)"));
+  img.segment(Ma, t2::point_at_infinity(image), dr::Style().color("#2ca02c").width(2));
+  img.segment(t2::point_at_infinity(image), Mb, dr::Style().color("#d62728").width(2).dash({4, 3}));
+  img.add(Ma, dr::Style().label("M a"));
+  img.add(Mb, dr::Style().label("M b"));
+  img.add(t2::point_at_infinity(image), dr::Style().color("#d62728").label("M (1, 0)"));
+  dr::PlaneView plane;
+  plane.half_width = 3;
+  plane.axes = true;
+  dr::SphereView sphere;
+  sphere.lat = 30;
+  sphere.lon = -50;
+  dr::save(scene, plane, dir / "perspective-scene-plane.svg");
+  dr::SphereView high = sphere;  // from higher up: a and b both on the near hemisphere
+  high.lat = 55;
+  high.lon = 45;
+  dr::save(scene, high, dir / "perspective-scene-sphere.svg");
+  dr::save(img, plane, dir / "perspective-image-plane.svg");
+  dr::save(img, sphere, dir / "perspective-image-sphere.svg");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -274,5 +377,7 @@ int main(int argc, char** argv) {
   orientation(dir);
   parallels(dir);
   sides(dir);
+  duality(dir);
+  perspective(dir);
   return 0;
 }
