@@ -73,47 +73,6 @@ TEST(CompareAngle, MatchesAtan2OnEverySmallDirection) {
   brute_force_against_atan2<ExactPoint>();
 }
 
-/// Where angle.hpp says Algorithm 1 as printed is wrong.
-bool documented_failure(const Dir& p, const Dir& q) {
-  const double pi = std::numbers::pi, tp = p.theta(), tq = q.theta();
-  const auto pp = p.primitive(), pq = q.primitive();
-  if (pp.first == -pq.first && pp.second == -pq.second) return true;  // antipodal
-  if (pp == pq) return false;
-  if (p.y > 0) return tq > tp + pi;
-  if (p.y == 0 && p.x < 0) return q.y > 0;
-  if (p.y < 0) return tq > tp - pi;
-  return false;  // p = [0, 1, 0]
-}
-
-template <class P>
-void algorithm1_failures() {
-  const auto ds = small_directions(6);
-  long wrong = 0, upper_pairs = 0;
-  for (const Dir& a : ds)
-    for (const Dir& b : ds) {
-      const bool bad = compare_angle_algorithm1(dir<P>(a), dir<P>(b)) != atan2_oracle(a, b);
-      wrong += bad;
-      ASSERT_EQ(bad, documented_failure(a, b)) << a.x << ',' << a.y << ' ' << b.x << ',' << b.y;
-      // Right in the first two quadrants, θ in [0, π), as the seed intends.
-      const bool upper = (a.y > 0 || (a.y == 0 && a.x > 0)) && (b.y > 0 || (b.y == 0 && b.x > 0));
-      if (upper) {
-        ++upper_pairs;
-        ASSERT_FALSE(bad);
-      }
-    }
-  EXPECT_GT(upper_pairs, 0);
-  EXPECT_GT(wrong, long(ds.size()));  // it does fail, and often
-  // The simplest counterexamples of the chapter.
-  EXPECT_EQ(compare_angle_algorithm1(dir<P>({1, 0}), dir<P>({-1, 0})), ZERO);           // 0 "=" π
-  EXPECT_EQ(compare_angle_algorithm1(dir<P>({0, -1}), dir<P>({1, -1})), POSITIVE);      // 3π/2 ">" 7π/4
-  EXPECT_EQ(compare_angle(dir<P>({0, -1}), dir<P>({1, -1})), NEGATIVE);
-}
-
-TEST(CompareAngle, SeedAlgorithm1FailsExactlyWhereDocumented) {
-  algorithm1_failures<Point>();
-  algorithm1_failures<ExactPoint>();
-}
-
 TEST(CompareAngle, DoublesAgreeWithTheSameIntegerPoints) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -135,7 +94,6 @@ TEST(CompareAngle, DoublesAgreeWithTheSameIntegerPoints) {
 
 TEST(CompareAngle, RejectsProperPoints) {
   EXPECT_THROW(compare_angle(Point(1, 0, 0), Point(0, 1, 0)), Undefined);
-  EXPECT_THROW(compare_angle_algorithm1(ExactPoint(0, 1, 0), ExactPoint(-1, 1, 0)), Undefined);
 }
 
 Rational to_rational_any(const double& v) { return to_rational(v); }

@@ -20,6 +20,11 @@
 #include <string>
 #include <vector>
 
+namespace chapter03 {
+void circles();                                                   // circles.cpp
+void circle_figures(const std::filesystem::path& dir, int& written);  // circles.cpp
+}  // namespace chapter03
+
 namespace {
 
 using t2::ExactPoint;
@@ -78,6 +83,23 @@ void join_meet_duality() {
   //< meet-demo
   std::cout << "ab = " << t2::to_string(ab) << ", cd = " << t2::to_string(cd) << "\nmeet(ab, cd) = " << str(m)
             << ", meet(cd, ab) = " << str(n) << ", n == antipode(m): " << (n == t2::antipode(m)) << "\n";
+  // The meet rule: z = meet(l, m) is where m, walked in its direction (tangent t = m × z at
+  // z), crosses l from its negative to its positive side. Checked on the pairs of a grid.
+  int line_pairs = 0, rule_ok = 0;
+  for (int i = -9; i <= 9; ++i)
+    for (int j = -9; j <= 9; ++j) {
+      const t2::ExactLine l(i % 3, i / 3, 1), mm(j / 3, 1, j % 3);
+      if (l == mm || l == t2::reverse(mm)) continue;  // one line: no meet
+      const ExactPoint z = t2::meet(l, mm);
+      const ExactPoint t(mm.X() * z.y() - mm.Y() * z.x(), mm.Y() * z.w() - mm.W() * z.y(),
+                         mm.W() * z.x() - mm.X() * z.w());  // t = m × z, along m at z
+      const ExactPoint before(z.w() - t.w(), z.x() - t.x(), z.y() - t.y());
+      const ExactPoint after(z.w() + t.w(), z.x() + t.x(), z.y() + t.y());
+      ++line_pairs;
+      rule_ok += t2::side(l, before) == t2::NEGATIVE && t2::side(l, after) == t2::POSITIVE;
+    }
+  std::cout << "meet(l, m): m crosses l from - to + there, on " << rule_ok << " of " << line_pairs
+            << " pairs of lines\n";
   try {
     (void)t2::meet(ab, t2::reverse(ab));
   } catch (const t2::Undefined& e) {
@@ -100,25 +122,6 @@ void join_meet_duality() {
 
 // ---------------------------------------------------------------------------------------------
 // 3. Point on segment.
-
-namespace sketch {
-//> on-segment
-// r lies on the segment from p to q (p != ±q) iff r = αp + βq with α, β >= 0. Take any point
-// m off the line p ∨ q: then Δ(m, r, q) = α Δ(m, p, q) and Δ(m, p, r) = β Δ(m, p, q), so the
-// two coefficients are read off from orientation signs — no division, exact.
-template <class T>
-bool on_segment(const t2::BasicPoint<T>& p, const t2::BasicPoint<T>& q, const t2::BasicPoint<T>& r) {
-  if (t2::orient(p, q, r) != t2::ZERO) return false;  // not even on the line
-  const t2::BasicPoint<T> axes[3] = {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}};
-  for (const auto& m : axes) {
-    const Sign base = t2::orient(m, p, q);
-    if (base == t2::ZERO) continue;  // m is on the line: try the next axis point
-    return t2::orient(m, r, q) * base >= 0 && t2::orient(m, p, r) * base >= 0;
-  }
-  throw t2::Undefined("segment(p, q) is undefined when q = p or q = antipode(p)");
-}
-//< on-segment
-}  // namespace sketch
 
 void point_on_segment() {
   std::cout << "== 3. Point on segment\n";
@@ -148,7 +151,7 @@ void point_on_segment() {
   //< on-segment-demo
   std::cout << "p = " << str(p) << ", q = " << str(q) << ": [0,-1,0] " << at_omega << ", [0,1,0] " << other_omega
             << ", [1,-1,0] " << front_ray << ", [1,1,0] " << between << "\n";
-  int cases = 0, sketch_ok = 0, library_ok = 0, inside = 0;
+  int cases = 0, library_ok = 0, inside = 0;
   for (int pw = -1; pw <= 1; ++pw)
     for (int px = -2; px <= 2; ++px)
       for (int qw = -1; qw <= 1; ++qw)
@@ -164,12 +167,14 @@ void point_on_segment() {
                 ++cases;
                 const bool o = oracle(pp, qq, rr);
                 inside += o;
-                sketch_ok += sketch::on_segment(pp, qq, rr) == o;
                 library_ok += t2::on_segment(pp, qq, rr) == o;
               }
             }
-  std::cout << "against the rational oracle, " << cases << " cases (" << inside << " on the segment): sketch right on "
-            << sketch_ok << ", t2::on_segment right on " << library_ok << "\n\n";
+  std::cout << "against the rational oracle, " << cases << " cases (" << inside
+            << " on the segment): t2::on_segment right on " << library_ok << "\n";
+  std::cout << "one-point segment: on_segment(p, p, p) = " << t2::on_segment(p, p, p)
+            << ", on_segment(p, p, [2, 0, 0]) = " << t2::on_segment(p, p, ExactPoint(2, 0, 0))
+            << ", on_segment(p, p, [1, 1, 0]) = " << t2::on_segment(p, p, ExactPoint(1, 1, 0)) << "\n\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -356,11 +361,10 @@ void midpoints() {
   auto where = [](const ExactPoint& m) { return m.w() > 0 ? "front" : m.w() < 0 ? "back" : "Omega"; };
   for (const Case& c : {Case{"front-front", f1, f2}, Case{"back-back  ", b1, b2}, Case{"front-back ", f1, b1}}) {
     //> midpoint-demo
-    const ExactPoint n = t2::naive_midpoint(c.p, c.q), m = t2::midpoint(c.p, c.q);
+    const ExactPoint n = sketch::naive_midpoint(c.p, c.q), m = t2::midpoint(c.p, c.q);
     //< midpoint-demo
     std::cout << c.name << "  p = " << str(c.p) << " q = " << str(c.q) << "  naive " << str(n) << " (" << where(n)
-              << ", on segment: " << t2::on_segment(c.p, c.q, n) << ", same as sketch: " << (n == sketch::naive_midpoint(c.p, c.q))
-              << ")  midpoint " << str(m) << " (" << where(m)
+              << ", on segment: " << t2::on_segment(c.p, c.q, n) << ")  midpoint " << str(m) << " (" << where(m)
               << ", on segment: " << t2::on_segment(c.p, c.q, m) << ", same as sketch: "
               << (m == sketch::seed_midpoint(c.p, c.q)) << ")\n";
   }
@@ -410,7 +414,7 @@ void angles() {
   // Sixteen directions, at known angles, in counter-clockwise order from [0,1,0].
   const int dirs[16][2] = {{1, 0},  {2, 1},   {1, 1},   {1, 2},   {0, 1},  {-1, 2}, {-1, 1}, {-2, 1},
                            {-1, 0}, {-2, -1}, {-1, -1}, {-1, -2}, {0, -1}, {1, -2}, {1, -1}, {2, -1}};
-  int total = 0, bad1 = 0, bad1_upper = 0, bad_lib1 = 0, bad_sketch = 0, bad_lib = 0;
+  int total = 0, bad1 = 0, bad1_upper = 0, bad1_domain = 0, bad_sketch = 0, bad_lib = 0;
   std::vector<std::string> failures;
   for (int i = 0; i < 16; ++i)
     for (int j = 0; j < 16; ++j) {
@@ -418,20 +422,20 @@ void angles() {
       const Sign want = t2::sign_of(i - j);  // the oracle: the index order is the angle order
       ++total;
       const Sign a1 = sketch::algorithm_1(p, q);
-      bad_lib1 += t2::compare_angle_algorithm1(p, q) != a1;  // the library keeps it as printed
       if (a1 != want) {
         ++bad1;
-        if (i <= 8 && j <= 8) {  // both in the closed upper half [0, π]
+        if (i <= 8 && j <= 8) {  // both in the closed upper half [0, π], the seed's domain
           ++bad1_upper;
+          bad1_domain += i != 8 && j != 8;  // ... and neither angle is π
           failures.push_back(str(p) + " vs " + str(q) + ": says " + sym(a1) + ", truth " + sym(want));
         }
       }
       bad_sketch += sketch::compare_angle(p, q) != want;
       bad_lib += t2::compare_angle(p, q) != want;
     }
-  std::cout << "Algorithm 1 is wrong on " << bad1 << " of " << total << " ordered pairs of 16 directions ("
-            << "t2::compare_angle_algorithm1 differs from the sketch on " << bad_lib1 << "); " << bad1_upper
-            << " wrong pairs have both angles in [0, pi]:\n";
+  std::cout << "Algorithm 1 is wrong on " << bad1 << " of " << total << " ordered pairs of 16 directions; "
+            << bad1_upper << " wrong pairs have both angles in [0, pi], " << bad1_domain
+            << " of them without an angle pi:\n";
   for (const auto& f : failures) std::cout << "  " << f << "\n";
   std::cout << "corrected: the sketch is wrong on " << bad_sketch << ", t2::compare_angle on " << bad_lib << " of "
             << total << "\n\n";
@@ -469,7 +473,7 @@ void figures(const std::filesystem::path& dir) {
       f.add(q, dr::Style().label(names[k][1]));
       ++k;
       f.add(t2::midpoint(p, q), dr::Style().color("#2ca02c").marker(dr::Marker::square).size(5));
-      f.add(t2::naive_midpoint(p, q), dr::Style().color("#d62728").marker(dr::Marker::cross).size(5));
+      f.add(sketch::naive_midpoint(p, q), dr::Style().color("#d62728").marker(dr::Marker::cross).size(5));
     }
     dr::PlaneView wide = plane;  // room for the back half-ray of the front-back segment
     wide.half_width = 5;
@@ -489,7 +493,8 @@ void figures(const std::filesystem::path& dir) {
     written += dr::save(f, plane, dir / "sweep-plane.svg");
     written += dr::save(f, sphere, dir / "sweep-sphere.svg");
   }
-  std::cout << "figures: 6 in " << dir.filename().string() << "\n";
+  chapter03::circle_figures(dir, written);
+  std::cout << "figures: 10 in " << dir.filename().string() << "\n";
   std::cerr << written << " figure file(s) rewritten\n";  // depends on the directory: not stdout
 }
 
@@ -505,5 +510,6 @@ int main(int argc, char** argv) {
   distances();
   midpoints();
   angles();
+  chapter03::circles();
   figures(dir);
 }

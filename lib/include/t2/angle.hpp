@@ -16,13 +16,13 @@
 /// "p < q" otherwise. Here Δ(p, o, q) = −(p_x q_y − p_y q_x) and Δ(p, o, d) = p_y, so the
 /// algorithm decides by which way q turns from p, and that is the order of the angles only
 /// when both lie in the first two quadrants, θ ∈ [0, π), and are not antipodal. As printed
-/// it answers wrongly (found by the brute force of tests/test_angle.cpp against atan2) when:
+/// it answers wrongly (chapter 03's program finds them on sixteen directions of known order) when:
 /// - p and q are antipodal, e.g. [0,1,0] and [0,−1,0]: "equal" (the determinant is zero);
 /// - θp ∈ (0, π) and θq ∈ (θp + π, 2π): "p > q" (q is "behind" p by less than half a turn);
 /// - θp = π, p = [0, −1, 0]: "p < q" for every q, also for q in the upper half;
 /// - θp ∈ (π, 2π): wrong for every θq ∈ (θp − π, 2π) other than θp: it answers by the turn,
 ///   and the angles the turn puts "ahead" of p wrap around past 2π.
-/// It is not even antisymmetric. `compare_angle_algorithm1` keeps it as printed, for the chapter.
+/// It is not even antisymmetric. Chapter 03's program keeps it as printed, to show this.
 ///
 /// The correction, `compare_angle`, first compares the half turns [0, π) (y > 0, or y = 0 and
 /// x > 0) and [π, 2π), and only inside one half uses the turn from p to q, which there is less
@@ -99,21 +99,6 @@ Sign compare_angle(const BasicPoint<T>& p, const BasicPoint<T>& q) {
   // Same half turn: q is ahead of p iff p_x q_y - p_y q_x > 0.
   return sign_of_poly([](const auto& a, const auto& b, const auto& c, const auto& d) { return b * c - a * d; }, p.x(),
                       p.y(), q.x(), q.y());
-}
-
-/// The seed's Algorithm 1 exactly as printed (for teaching): NEGATIVE for "∠p < ∠q", ZERO for
-/// "∠p = ∠q", POSITIVE for "∠p > ∠q". Right only when both directions are in the first two
-/// quadrants and not antipodal; see the file comment for its failures. Use `compare_angle`.
-template <class T>
-Sign compare_angle_algorithm1(const BasicPoint<T>& p, const BasicPoint<T>& q) {
-  const char* rule = "compare_angle_algorithm1(p, q) compares directions only: points [0, x, y] of Omega";
-  detail::require_direction(p, rule);
-  detail::require_direction(q, rule);
-  const BasicPoint<T> o(T(1), T(0), T(0)), d(T(0), T(1), T(0));
-  const Sign pq = orient(p, o, q);
-  if (pq * orient(p, o, d) == POSITIVE) return POSITIVE;
-  if (pq == ZERO) return ZERO;
-  return NEGATIVE;
 }
 
 }  // namespace t2

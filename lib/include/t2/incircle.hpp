@@ -1,32 +1,38 @@
 #pragma once
+//> incircle-definition
 /// @file incircle.hpp
 /// @brief The in-circle test of T²: is d inside the oriented circle through a, b, c?
 ///
-/// **Front points.** For a, b, c, d on the front side this is the Euclidean predicate of the
-/// lifting map (seed 002): lift each point (X, Y) to (X, Y, X² + Y²) on the paraboloid; d is
-/// inside the circle through a, b, c exactly when its lift lies below the plane of theirs. In
-/// homogeneous coordinates each row of the 4×4 determinant |X, Y, X² + Y², 1| is multiplied by
-/// w² > 0, which gives the polynomial rows [x w, y w, x² + y², w²] and keeps the sign. The result
-/// follows CGAL's `side_of_oriented_circle`: POSITIVE when d is inside the circle through a, b, c
-/// and a, b, c turn counter-clockwise, NEGATIVE outside, ZERO on it; reversing the turn of a, b, c
-/// reverses the answer.
+/// **Front points.** For a, b, c, d on the front side this is the Euclidean predicate of
+/// the lifting map (seed 002): lift each point (X, Y) to (X, Y, X² + Y²) on the
+/// paraboloid; d is inside the circle through a, b, c exactly when its lift lies below
+/// the plane of theirs. In homogeneous coordinates each row of the 4×4 determinant
+/// |X, Y, X² + Y², 1| is multiplied by w² > 0, which gives the polynomial rows
+/// [x w, y w, x² + y², w²] and keeps the sign. The result follows CGAL's
+/// `side_of_oriented_circle`: POSITIVE when d is inside the circle through a, b, c and a,
+/// b, c turn counter-clockwise, NEGATIVE outside, ZERO on it; reversing the turn of a, b,
+/// c reverses the answer.
 ///
-/// **Both sides: the definition of T².** The homogeneous determinant alone is blind to sides (it
-/// gives ¬d the same sign as d), so T² needs a definition. With the squared distances of §4.3.1
-/// (distance.hpp), a circle of T² has a centre z and a radius in T¹; a point of the other side
-/// than z is *beyond infinity* from z. So three points on both sides of T² (or on Ω) lie on no
-/// circle, and `in_circle` throws `Undefined` for them, as for three collinear points. For a, b,
-/// c proper on one side σ and not collinear, let z be their circumcentre on side σ and r² =
-/// d²(z, a); the *disk* is the set of points with d²(z, d) < r² in the T¹ order, i.e. the points
-/// of side σ strictly inside the Euclidean circle. Then
+/// **Both sides: the definition of T².** The homogeneous determinant alone is blind to
+/// sides (it gives ¬d the same sign as d), so T² needs a definition. With the squared
+/// distances of §4.3.1 (distance.hpp), a circle of T² has a centre z and a radius in T¹;
+/// a point of the other side than z is *beyond infinity* from z. So three points on both
+/// sides of T² (or on Ω) lie on no circle, and `in_circle` throws `Undefined` for them,
+/// as for three collinear points. For a, b, c proper on one side σ and not collinear, let
+/// z be their circumcentre on side σ and r² = d²(z, a); the *disk* is the set of points
+/// with d²(z, d) < r² in the T¹ order, i.e. the points of side σ strictly inside the
+/// Euclidean circle. Then
 ///
-///     in_circle(a, b, c, d) = orient(a, b, c) · (+1 if d is in the disk, 0 if d²(z, d) = r², −1 otherwise)
+///     in_circle(a, b, c, d) = orient(a, b, c)
+///         · (+1 if d is in the disk, 0 if d²(z, d) = r², −1 otherwise)
 ///
-/// so a point d on the other side or on Ω is always outside the disk. The interior is the side
-/// to the left of the oriented circle a → b → c: the disk when orient(a, b, c) > 0, and its
-/// complement — the disk of the antipodal centre ¬z, whose radius is beyond infinity — when it
-/// is negative. Note that for three back points orient(a, b, c) is the opposite of the turn
-/// their drawn positions make (the planar model shows the back side mirrored).
+/// so a point d on the other side or on Ω is always outside the disk. The interior is the
+/// side to the left of the oriented circle a → b → c: the disk when orient(a, b, c) > 0,
+/// and its complement — the disk of the antipodal centre ¬z, whose radius is beyond
+/// infinity — when it is negative. Note that for three back points orient(a, b, c) is the
+/// opposite of the turn their drawn positions make (the planar model shows the back side
+/// mirrored).
+//< incircle-definition
 
 #include "t2/error.hpp"
 #include "t2/filter.hpp"

@@ -20,8 +20,8 @@
 ///   construction of T² (which never leaves the coordinate ring). The library returns p when
 ///   p = q and throws `Undefined` otherwise.
 ///
-/// `naive_midpoint` keeps the two formulas a first attempt produces, for the chapter that shows
-/// why they fail.
+/// The naive formulas a first attempt produces live in chapter 03's program, which shows why
+/// they fail; they are not part of the library.
 
 #include <array>
 #include <cmath>
@@ -72,37 +72,6 @@ BasicPoint<T> midpoint(const BasicPoint<T>& p, const BasicPoint<T>& q) {
     if (detail::all_zero_or_not_finite(m[0], m[1], m[2])) return to_double(midpoint(to_exact(p), to_exact(q)));
   }
   return BasicPoint<T>(m[0], m[1], m[2]);
-}
-
-/// The naive midpoint formulas of §4.3.2 (for teaching only).
-enum class NaiveMidpoint {
-  /// The Euclidean formula with X = x/w, Y = y/w substituted and denominators cleared:
-  /// [2 w0 w1, x0 w1 + x1 w0, y0 w1 + y1 w0]. Right for two front points; for two back points
-  /// it gives the antipode of the midpoint (a front point), for a front and a back point a
-  /// proper point instead of a point of Ω, and [0, 0, 0] for two points of Ω.
-  homogenized,
-  /// The plain sum of the triples, [w0 + w1, x0 + x1, y0 + y1]: not even a function of the points
-  /// (scaling p by α > 0 moves it), and [0, 0, 0] for antipodes.
-  coordinate_sum,
-};
-
-/// A naive midpoint (see `NaiveMidpoint`), kept for the chapter that shows why it fails. Throws
-/// `Undefined` when the formula yields [0, 0, 0].
-template <class T>
-BasicPoint<T> naive_midpoint(const BasicPoint<T>& p, const BasicPoint<T>& q,
-                             NaiveMidpoint kind = NaiveMidpoint::homogenized) {
-  T w, x, y;
-  if (kind == NaiveMidpoint::homogenized) {
-    w = T(2) * p.w() * q.w();
-    x = p.x() * q.w() + q.x() * p.w();
-    y = p.y() * q.w() + q.y() * p.w();
-  } else {
-    w = p.w() + q.w();
-    x = p.x() + q.x();
-    y = p.y() + q.y();
-  }
-  if (w == 0 && x == 0 && y == 0) throw Undefined("naive_midpoint(p, q) gives [0,0,0], which is not a point of T2");
-  return BasicPoint<T>(w, x, y);
 }
 
 }  // namespace t2

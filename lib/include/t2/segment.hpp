@@ -95,38 +95,41 @@ bool operator==(const BasicSegment<T>& s, const BasicSegment<T>& t) {
 
 namespace detail {
 /// The exact test behind `on_segment` (see there).
+//> on-segment
 template <class T>
 bool on_segment_impl(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>& r) {
   if (p == antipode(q)) throw Undefined(detail::kAntipodalSegment);
   if (orient(p, q, r) != ZERO) return false;
-  if (p == q) return r == p;
+  if (p == q) return r == p;  // the one-point segment
   // (u × v)·(s × t) = (u·s)(v·t) − (u·t)(v·s) (Lagrange's identity) on the coordinates.
-  auto coefficient = [](const auto& uw, const auto& ux, const auto& uy, const auto& vw, const auto& vx,
-                        const auto& vy, const auto& pw, const auto& px, const auto& py, const auto& qw,
-                        const auto& qx, const auto& qy) {
-    const auto us = uw * pw + ux * px + uy * py, vt = vw * qw + vx * qx + vy * qy;
-    const auto ut = uw * qw + ux * qx + uy * qy, vs = vw * pw + vx * px + vy * py;
+  auto coefficient = [](const auto& uw, const auto& ux, const auto& uy,  // u
+                        const auto& vw, const auto& vx, const auto& vy,  // v
+                        const auto& sw, const auto& sx, const auto& sy,  // s
+                        const auto& tw, const auto& tx, const auto& ty) {  // t
+    const auto us = uw * sw + ux * sx + uy * sy, vt = vw * tw + vx * tx + vy * ty;
+    const auto ut = uw * tw + ux * tx + uy * ty, vs = vw * sw + vx * sx + vy * sy;
     return us * vt - ut * vs;
   };
   // α: (r × q)·(p × q);  β: (p × r)·(p × q).
-  const Sign alpha = sign_of_poly(coefficient, r.w(), r.x(), r.y(), q.w(), q.x(), q.y(), p.w(), p.x(),
-                                  p.y(), q.w(), q.x(), q.y());
-  const Sign beta = sign_of_poly(coefficient, p.w(), p.x(), p.y(), r.w(), r.x(), r.y(), p.w(), p.x(),
-                                 p.y(), q.w(), q.x(), q.y());
+  const Sign alpha = sign_of_poly(coefficient, r.w(), r.x(), r.y(), q.w(), q.x(), q.y(),
+                                  p.w(), p.x(), p.y(), q.w(), q.x(), q.y());
+  const Sign beta = sign_of_poly(coefficient, p.w(), p.x(), p.y(), r.w(), r.x(), r.y(),
+                                 p.w(), p.x(), p.y(), q.w(), q.x(), q.y());
   return alpha != NEGATIVE && beta != NEGATIVE;
 }
+//< on-segment
 
 }  // namespace detail
 
 /// Is r on the segment pq? (seed 000, §4.3.5) Exact; throws `Undefined` when q = ¬p.
 ///
-/// The seed maps the question to R³ and then says "if b and c are on the same side of the
-/// line ad, r ∈ pq if Δ(c, o, a) ≠ Δ(c, o, b) or r = p". That statement is muddled: a, d = −a
-/// and the origin o are collinear, so "the line ad" passes through o and is not the boundary
-/// meant; Δ of three points of R³ is not a sign without a fourth point or a normal; and the
-/// case "b and c on different sides" is left unsaid. The exact reformulation used here:
-/// r ∈ pq iff r is a non-negative combination αp + βq. With p ≠ ±q the cross product
-/// n = p × q is not zero, and for r in the plane of p and q (Δ(p, q, r) = 0)
+/// The seed maps the question to R³: with a = p, b = q, c = r and d = −a as vectors, "if b and
+/// c are on the same side of the line ad, r ∈ pq iff Δ(c, o, a) ≠ Δ(c, o, b) or r = p". That
+/// is sound read in the plane through o, a and b (which holds c): there the line ad passes
+/// through o, Δ is the orientation within that plane (any fixed normal orients it), and the
+/// unsaid case, b and c on different sides, means r ∉ pq. The same test written with signs of
+/// T² is used here: r ∈ pq iff r is a non-negative combination αp + βq. With p ≠ ±q the cross
+/// product n = p × q is not zero, and for r in the plane of p and q (Δ(p, q, r) = 0)
 /// r × q = α n and p × r = β n, so sign α = sign((r×q)·n), sign β = sign((p×r)·n): two exact
 /// degree-4 signs. For p = q the segment is the point p, and r is on it iff r = p.
 ///
