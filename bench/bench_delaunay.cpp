@@ -1,0 +1,164 @@
+// t2::delaunay against CGAL's Delaunay_triangulation_2 (Epick, range insertion, which sorts
+// spatially) on the same points in one run: both times, their ratio, t2's bytes per point.
+//
+//   bench_delaunay --benchmark_filter='Compare'        times and ratio, 10⁶ points per input
+//   bench_delaunay --benchmark_filter='Rss/t2/uniform' peak memory of one construction alone
+//   bench_delaunay --benchmark_filter='Rss/cgal/uniform'  (run each Rss case in its own process:
+//                                                       maxrss never goes down)
+//   bench_delaunay --benchmark_filter='Raw'            the same code on raw doubles (inexact)
+//
+// Inputs come from t2::gen: uniform, normal (one cluster), grid, circle (rounded), clustered
+// (64 normal clusters). Set T2_BENCH_N to change the size (default 10⁶).
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "t2/filter.hpp"
+#include "t2/gen/generate.hpp"
+#include "t2/incircle.hpp"
+#include "t2/triangulation/delaunay.hpp"
+
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalDelaunay = CGAL::Delaunay_triangulation_2<Epick>;
+
+std::size_t bench_n() {
+  const char* s = std::getenv("T2_BENCH_N");
+  return s != nullptr ? std::stoul(s) : 1000000;
+}
+
+const char* const kInputs[] = {"uniform", "normal", "grid", "circle", "clustered"};
+
+std::vector<t2::Point> make_input(int which, std::size_t n) {
+  t2::gen::Options o;
+  o.n = n;
+  o.seed = 42;
+  const std::string name = kInputs[which];
+  t2::gen::Kind k = t2::gen::Kind::uniform;
+  if (name == "normal") {
+    k = t2::gen::Kind::normal;
+    o.clusters = 1;
+  } else if (name == "clustered") {
+    k = t2::gen::Kind::normal;
+    o.clusters = 64;
+  } else if (name == "grid") {
+    k = t2::gen::Kind::grid;
+  } else if (name == "circle") {
+    k = t2::gen::Kind::circle;
+    o.cartesian = true;
+  }
+  auto pts = t2::gen::points(k, o);
+  for (auto& p : pts)  // w = 1 for both libraries (already so for these kinds)
+    if (p.w() != 1) p = t2::Point::cartesian(p.x() / p.w(), p.y() / p.w());
+  return pts;
+}
+
+std::vector<Epick::Point_2> to_cgal(const std::vector<t2::Point>& pts) {
+  std::vector<Epick::Point_2> out;
+  out.reserve(pts.size());
+  for (const auto& p : pts) out.emplace_back(p.x(), p.y());
+  return out;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Times and ratio on the same points, in the same process.
+void Compare(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const auto pts = make_input(which, bench_n());
+  const auto cpts = to_cgal(pts);
+  double t2_time = 0, cgal_time = 0, bytes = 0, exact = 0;
+  std::size_t triangles = 0, cgal_faces = 0;
+  for (auto _ : state) {
+    t2::filter_stats().reset();
+    auto t0 = std::chrono::steady_clock::now();
+    const t2::Triangulation tr = t2::delaunay(pts);
+    t2_time += seconds_since(t0);
+    exact = double(t2::filter_stats().exact) / double(std::max<std::uint64_t>(1, t2::filter_stats().calls));
+    bytes = double(tr.memory_bytes()) / double(pts.size());
+    triangles = tr.finite_triangles().size();
+    t0 = std::chrono::steady_clock::now();
+    CgalDelaunay dt;
+    dt.insert(cpts.begin(), cpts.end());
+    cgal_time += seconds_since(t0);
+    cgal_faces = dt.number_of_faces();
+    benchmark::DoNotOptimize(cgal_faces);
+  }
+  const double it = double(state.iterations());
+  state.counters["t2_s"] = t2_time / it;
+  state.counters["cgal_s"] = cgal_time / it;
+  state.counters["ratio"] = t2_time / cgal_time;
+  state.counters["t2_B/pt"] = bytes;
+  state.counters["exact_share"] = exact;
+  state.counters["same_count"] = triangles == cgal_faces ? 1 : 0;
+  state.SetLabel(kInputs[which]);
+}
+BENCHMARK(Compare)->DenseRange(0, 4)->Iterations(2)->Unit(benchmark::kSecond);
+
+// Peak resident memory of one construction: run each case alone (maxrss never decreases).
+void Rss(benchmark::State& state, bool t2_side) {
+  const int which = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    auto pts = make_input(which, bench_n());
+    const std::size_t n = pts.size();
+    if (t2_side) {
+      const t2::Triangulation tr = t2::delaunay(std::move(pts));
+      benchmark::DoNotOptimize(tr.size());
+    } else {
+      const auto cpts = to_cgal(pts);
+      pts = {};
+      pts.shrink_to_fit();
+      CgalDelaunay dt;
+      dt.insert(cpts.begin(), cpts.end());
+      benchmark::DoNotOptimize(dt.number_of_faces());
+    }
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    state.counters["maxrss_B/pt"] = double(u.ru_maxrss) * 1024.0 / double(n);
+  }
+  state.SetLabel(std::string(t2_side ? "t2/" : "cgal/") + kInputs[which]);
+}
+BENCHMARK_CAPTURE(Rss, t2, true)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(Rss, cgal, false)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::kSecond);
+
+// The same algorithm on raw double predicates (no filter, not exact: uniform input only), to
+// measure what exactness costs.
+struct RawKernel : t2::DelaunayKernel {
+  static t2::Sign sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+    return sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
+  }
+  static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
+    return sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
+                                        d.y()));
+  }
+};
+
+void Raw(benchmark::State& state) {
+  const auto pts = make_input(0, bench_n());
+  double exact_time = 0, raw_time = 0;
+  for (auto _ : state) {
+    auto t0 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(t2::delaunay(pts).size());
+    exact_time += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(t2::delaunay_with<RawKernel>(pts).size());
+    raw_time += seconds_since(t0);
+  }
+  state.counters["exact_s"] = exact_time / double(state.iterations());
+  state.counters["raw_s"] = raw_time / double(state.iterations());
+  state.counters["exact/raw"] = exact_time / raw_time;
+}
+BENCHMARK(Raw)->Iterations(2)->Unit(benchmark::kSecond);
+
+}  // namespace
