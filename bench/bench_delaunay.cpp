@@ -1,5 +1,5 @@
 // t2::delaunay against CGAL's Delaunay_triangulation_2 (Epick, range insertion, which sorts
-// spatially) on the same points in one run: both times, their ratio, t2's bytes per point.
+// spatially) on the same points in one run: both CPU times, their ratio, t2's bytes per point.
 //
 //   bench_delaunay --benchmark_filter='Compare'        times and ratio, 10⁶ points per input
 //   bench_delaunay --benchmark_filter='Rss/t2/uniform' peak memory of one construction alone
@@ -15,7 +15,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -68,8 +68,11 @@ std::vector<Epick::Point_2> to_cgal(const std::vector<t2::Point>& pts) {
   return out;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// CPU time of the process (single-threaded code): less disturbed by other load than wall time.
+double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // Times and ratio on the same points, in the same process.
@@ -81,16 +84,16 @@ void Compare(benchmark::State& state) {
   std::size_t triangles = 0, cgal_faces = 0;
   for (auto _ : state) {
     t2::filter_stats().reset();
-    auto t0 = std::chrono::steady_clock::now();
+    double t0 = cpu_now();
     const t2::Triangulation tr = t2::delaunay(pts);
-    t2_time += seconds_since(t0);
+    t2_time += (cpu_now() - t0);
     exact = double(t2::filter_stats().exact) / double(std::max<std::uint64_t>(1, t2::filter_stats().calls));
     bytes = double(tr.memory_bytes()) / double(pts.size());
     triangles = tr.finite_triangles().size();
-    t0 = std::chrono::steady_clock::now();
+    t0 = cpu_now();
     CgalDelaunay dt;
     dt.insert(cpts.begin(), cpts.end());
-    cgal_time += seconds_since(t0);
+    cgal_time += (cpu_now() - t0);
     cgal_faces = dt.number_of_faces();
     benchmark::DoNotOptimize(cgal_faces);
   }
@@ -112,7 +115,7 @@ void Rss(benchmark::State& state, bool t2_side) {
     auto pts = make_input(which, bench_n());
     const std::size_t n = pts.size();
     if (t2_side) {
-      const t2::Triangulation tr = t2::delaunay(std::move(pts));
+      const t2::Triangulation tr = t2::delaunay(pts);  // the input stays alive, as a caller's would
       benchmark::DoNotOptimize(tr.size());
     } else {
       const auto cpts = to_cgal(pts);
@@ -148,12 +151,12 @@ void Raw(benchmark::State& state) {
   const auto pts = make_input(0, bench_n());
   double exact_time = 0, raw_time = 0;
   for (auto _ : state) {
-    auto t0 = std::chrono::steady_clock::now();
+    double t0 = cpu_now();
     benchmark::DoNotOptimize(t2::delaunay(pts).size());
-    exact_time += seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
+    exact_time += (cpu_now() - t0);
+    t0 = cpu_now();
     benchmark::DoNotOptimize(t2::delaunay_with<RawKernel>(pts).size());
-    raw_time += seconds_since(t0);
+    raw_time += (cpu_now() - t0);
   }
   state.counters["exact_s"] = exact_time / double(state.iterations());
   state.counters["raw_s"] = raw_time / double(state.iterations());

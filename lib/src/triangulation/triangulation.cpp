@@ -87,6 +87,14 @@ void Triangulation::rename_vertex(Index t, Index from, Index to) {
   } while (t != start);
 }
 
+void Triangulation::renumber(const std::vector<Index>& order, std::span<const Point> input) {
+  for (Index& v : v_)
+    if (v != infinite) v = order[v];
+  for (auto& [d, k] : duplicates_) d = order[d], k = order[k];
+  points_ = {};  // free the sorted copy first: the peak stays one copy of the points
+  points_.assign(input.begin(), input.end());
+}
+
 void Triangulation::finish() {
   std::unordered_map<Index, Index> kept;
   for (auto [d, k] : duplicates_) kept[d] = k;

@@ -148,43 +148,51 @@ void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>
 /// file comment for the algorithm and the rule on degenerate input. Throws `Undefined` for a
 /// point that is not on the front side.
 template <class K = DelaunayKernel>
-Triangulation delaunay_with(std::vector<Point> points, K kernel = {}) {
+Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   using Index = Triangulation::Index;
-  detail::require_front(points);
-  std::vector<std::uint32_t> order = spatial_order(points);
-  Triangulation tr(std::move(points));
+  detail::require_front(input);
+  // The triangulation is built on a copy of the points in insertion order (vertex m is the m-th
+  // inserted point), so that the walk and the flips touch memory in order; `renumber` restores
+  // the input indices and points at the end.
+  std::vector<std::uint32_t> order = spatial_order(input);
+  std::vector<Point> sorted;
+  sorted.reserve(order.size());
+  for (std::uint32_t k : order) sorted.push_back(input[k]);
+  Triangulation tr(std::move(sorted));
   const auto& pts = tr.points();
-  const std::size_t n = order.size();
+  const Index n = static_cast<Index>(order.size());
+  auto degenerate = [&](int dimension) {
+    tr.renumber(order, input);
+    detail::finish_degenerate(kernel, tr, order, dimension);
+    return std::move(tr);
+  };
   // The first triangle: the first point, the first other point, the first point off their line.
-  std::size_t ib = 1, ic = 0;
-  while (ib < n && kernel.compare_xy(pts[order[0]], pts[order[ib]]) == ZERO) ++ib;
-  if (ib >= n) {
-    detail::finish_degenerate(kernel, tr, order, 0);
-    return tr;
-  }
+  Index ib = 1, ic = 0;
+  while (ib < n && kernel.compare_xy(pts[0], pts[ib]) == ZERO) ++ib;
+  if (ib >= n) return degenerate(0);
   for (ic = ib + 1; ic < n; ++ic)
-    if (kernel.orient(pts[order[0]], pts[order[ib]], pts[order[ic]]) != ZERO) break;
-  if (ic >= n) {
-    detail::finish_degenerate(kernel, tr, order, 1);
-    return tr;
-  }
-  Index a = order[0], b = order[ib], c = order[ic];
-  if (kernel.orient(pts[a], pts[b], pts[c]) < 0) std::swap(a, b);
-  tr.make_triangle(a, b, c, n);
-  // The points skipped above (equal to the first or on the first line) are inserted next.
-  std::rotate(order.begin() + 1, order.begin() + ib, order.begin() + ib + 1);
-  std::rotate(order.begin() + 2, order.begin() + ic, order.begin() + ic + 1);
+    if (kernel.orient(pts[0], pts[ib], pts[ic]) != ZERO) break;
+  if (ic >= n) return degenerate(1);
+  if (kernel.orient(pts[0], pts[ib], pts[ic]) > 0)
+    tr.make_triangle(0, ib, ic, n);
+  else
+    tr.make_triangle(ib, 0, ic, n);
+  // Then the points skipped above (equal to the first or on the first line), then the rest.
+  auto next_point = [&, m = Index(1)]() mutable {
+    while (m == ib || m == ic) ++m;
+    return m++;
+  };
   std::vector<Index> stack;
   std::uint32_t rng = 2463534242u;
   Index last = 0;
-  for (std::size_t m = 3; m < n; ++m) {
-    const Index p = order[m];
+  for (Index m = 3; m < n; ++m) {
+    const Index p = next_point();
     const Triangulation::Location loc = tr.locate(
         pts[p], last, [&](const Point& u, const Point& v, const Point& w) { return kernel.orient(u, v, w); }, rng);
     if (loc.kind == Triangulation::Location::vertex) {
-      const Index v = tr.vertex(loc.t, loc.i);
-      if (p < v) tr.rename_vertex(loc.t, v, p);
-      tr.add_duplicate(std::max(p, v), std::min(p, v));
+      const Index v = tr.vertex(loc.t, loc.i);  // the kept point is the one of smaller input index
+      if (order[p] < order[v]) tr.rename_vertex(loc.t, v, p);
+      tr.add_duplicate(order[p] < order[v] ? v : p, order[p] < order[v] ? p : v);
       continue;
     }
     const Index first_new = static_cast<Index>(tr.size());
@@ -209,16 +217,16 @@ Triangulation delaunay_with(std::vector<Point> points, K kernel = {}) {
       stack.push_back(3 * u);
     }
   }
+  tr.renumber(order, input);
   tr.finish();
   return tr;
 }
 
-/// The Delaunay triangulation of front points with the exact predicates of the library.
-inline Triangulation delaunay(std::vector<Point> points) { return delaunay_with(std::move(points)); }
-/// The same for a span of points (copied into the triangulation).
-inline Triangulation delaunay(std::span<const Point> points) {
-  return delaunay_with(std::vector<Point>(points.begin(), points.end()));
-}
+/// The Delaunay triangulation of front points with the exact predicates of the library (the
+/// points are copied into the triangulation).
+inline Triangulation delaunay(std::span<const Point> points) { return delaunay_with(points); }
+/// The same for a vector of points.
+inline Triangulation delaunay(const std::vector<Point>& points) { return delaunay_with(std::span<const Point>(points)); }
 //< delaunay
 
 }  // namespace t2

@@ -44,6 +44,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,6 +146,10 @@ class Triangulation {
   /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
   /// `from`); used when a duplicate of smaller index arrives.
   void rename_vertex(Index t, Index from, Index to);
+  /// Gives vertex k the index order[k] everywhere (triangles, duplicates) and replaces the
+  /// points by a copy of `input`, where input[order[k]] is the old point k: the algorithms build
+  /// on a copy of the points in insertion order, for locality, and hand back input indices.
+  void renumber(const std::vector<Index>& order, std::span<const Point> input);
   /// Records that `dropped` equals `kept` (finished by `finish`).
   void add_duplicate(Index dropped, Index kept) { duplicates_.emplace_back(dropped, kept); }
   /// Sets the dimension (used by the algorithms for degenerate input).
