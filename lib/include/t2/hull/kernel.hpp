@@ -111,12 +111,14 @@ struct ChartOrder {
 
   /// NEGATIVE when p comes before q, ZERO when p = q, POSITIVE after.
   Sign compare(const Point& p, const Point& q) const {
+    //> hull-chart-order
     if (chart.front && p.w() == 1 && q.w() == 1) {  // the common case: plain comparisons, exact
       if (p.x() != q.x()) return p.x() < q.x() ? NEGATIVE : POSITIVE;
       return p.y() < q.y() ? NEGATIVE : (p.y() > q.y() ? POSITIVE : ZERO);
     }
     if (const Sign s = orient_to<K>(p, q, chart.y_inf); s != ZERO) return -s;
     return orient_to<K>(p, q, chart.x_inf);
+    //< hull-chart-order
   }
   /// p comes strictly before q.
   bool less(const Point& p, const Point& q) const { return compare(p, q) < 0; }
