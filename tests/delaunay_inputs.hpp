@@ -1,6 +1,7 @@
 #pragma once
-// Point sets for the Delaunay tests and benchmark (front points, w = 1). Written here because
-// the generators module t2::gen of Part II had not landed when these were written.
+// Point sets for the Delaunay tests (front points, w = 1): t2::gen's kinds, and the exact
+// degeneracies gen does not make (a full grid without repetition, many integer points exactly on
+// one circle, Kettner et al.'s classroom example).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,31 +10,19 @@
 #include <string>
 #include <vector>
 
+#include "t2/gen/generate.hpp"
 #include "t2/point.hpp"
 
 namespace t2::testing {
 
-/// n points whose coordinates are independent draws of `dist`.
-template <class Dist>
-std::vector<Point> sample_points(std::size_t n, std::uint64_t seed, Dist dist) {
-  std::mt19937_64 rng(seed);
-  std::vector<Point> out;
-  out.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double x = dist(rng);
-    out.push_back(Point::cartesian(x, dist(rng)));
-  }
-  return out;
-}
-
-/// n points uniform in the square [-1, 1]².
-inline std::vector<Point> uniform_points(std::size_t n, std::uint64_t seed) {
-  return sample_points(n, seed, std::uniform_real_distribution<double>(-1, 1));
-}
-
-/// n points of a standard normal distribution.
-inline std::vector<Point> normal_points(std::size_t n, std::uint64_t seed) {
-  return sample_points(n, seed, std::normal_distribution<double>(0, 1));
+/// n points of a t2::gen kind (uniform, normal with `clusters` clusters, rounded circle...).
+inline std::vector<Point> gen_points(gen::Kind kind, std::size_t n, std::uint64_t seed, std::size_t clusters = 4) {
+  gen::Options o;
+  o.n = n;
+  o.seed = seed;
+  o.clusters = clusters;
+  o.cartesian = true;  // circle: rounded Cartesian points, w = 1, the same points for CGAL
+  return gen::points(kind, o);
 }
 
 /// The integer grid of about n points (side ⌈√n⌉), shuffled: massively cocircular.
@@ -43,18 +32,6 @@ inline std::vector<Point> grid_points(std::size_t n, std::uint64_t seed) {
   out.reserve(side * side);
   for (std::size_t i = 0; i < side; ++i)
     for (std::size_t j = 0; j < side; ++j) out.push_back(Point::cartesian(double(i), double(j)));
-  std::shuffle(out.begin(), out.end(), std::mt19937_64(seed));
-  return out;
-}
-
-/// n points on the unit circle, rounded (nearly, not exactly, cocircular), shuffled.
-inline std::vector<Point> circle_points(std::size_t n, std::uint64_t seed) {
-  std::vector<Point> out;
-  out.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double a = 2 * M_PI * double(k) / double(n);
-    out.push_back(Point::cartesian(std::cos(a), std::sin(a)));
-  }
   std::shuffle(out.begin(), out.end(), std::mt19937_64(seed));
   return out;
 }
@@ -78,23 +55,6 @@ inline std::vector<Point> lattice_circle_points(std::size_t inner, std::uint64_t
     out.push_back(Point::cartesian(x, double(u(rng))));
   }
   std::shuffle(out.begin(), out.end(), rng);
-  return out;
-}
-
-/// Clusters: n points in 32 small normal clusters of random centres and spreads.
-inline std::vector<Point> clustered_points(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::normal_distribution<double> g(0, 1);
-  std::vector<std::array<double, 3>> centres(32);
-  for (auto& c : centres) c = {u(rng), u(rng), std::pow(10.0, -1 - 3 * (u(rng) + 1) / 2)};
-  std::vector<Point> out;
-  out.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto& c = centres[k % centres.size()];
-    const double x = c[0] + c[2] * g(rng);
-    out.push_back(Point::cartesian(x, c[1] + c[2] * g(rng)));
-  }
   return out;
 }
 

@@ -45,22 +45,29 @@ std::vector<Tri> cgal_triangles(const std::vector<Point>& pts) {
 void expect_cgal_equal(const std::vector<Point>& pts) {
   const Triangulation tr = delaunay(pts);
   expect_delaunay(tr, pts.size() <= 5000);
-  const auto ours = triangle_set(tr), theirs = cgal_triangles(pts);
+  // CGAL keeps one of equal points, t2 the one of smallest index: name CGAL's by t2's choice.
+  std::vector<Triangulation::Index> canonical(pts.size());
+  std::iota(canonical.begin(), canonical.end(), 0);
+  for (auto [dropped, kept] : tr.duplicates()) canonical[dropped] = kept;
+  std::vector<Tri> theirs;
+  for (const Tri& t : cgal_triangles(pts)) theirs.push_back(testing::renamed(t, canonical));
+  std::sort(theirs.begin(), theirs.end());
+  const auto ours = triangle_set(tr);
   EXPECT_EQ(ours.size(), theirs.size());
   EXPECT_TRUE(ours == theirs) << "the triangle sets of t2 and CGAL differ";
 }
 
 TEST(Delaunay, UniformEqualsCgal) {
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::uniform_points(3000 * scale(), seed));
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::gen_points(gen::Kind::uniform, 3000 * scale(), seed));
 }
 
 TEST(Delaunay, NormalEqualsCgal) {
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::normal_points(3000 * scale(), seed));
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_cgal_equal(testing::gen_points(gen::Kind::normal, 3000 * scale(), seed, 1));
 }
 
 TEST(Delaunay, SmallSetsEqualCgal) {
   for (std::uint64_t seed = 1; seed <= 300; ++seed)
-    expect_cgal_equal(testing::uniform_points(3 + seed % 20, seed));
+    expect_cgal_equal(testing::gen_points(gen::Kind::uniform, 3 + seed % 20, seed));
 }
 
 // CGAL breaks cocircular ties with the same symbolic perturbation, so even the degenerate
@@ -74,14 +81,14 @@ TEST(Delaunay, CocircularLatticeEqualsCgal) {
   expect_cgal_equal(testing::lattice_circle_points(200, 2));
 }
 
-TEST(Delaunay, RoundedCircleEqualsCgal) { expect_cgal_equal(testing::circle_points(1000 * scale(), 3)); }
+TEST(Delaunay, RoundedCircleEqualsCgal) { expect_cgal_equal(testing::gen_points(gen::Kind::circle, 1000 * scale(), 3)); }
 
 TEST(Delaunay, ClassroomExample) {
   const auto pts = testing::classroom_points(16);
   expect_cgal_equal(pts);
 }
 
-TEST(Delaunay, ClusteredEqualsCgal) { expect_cgal_equal(testing::clustered_points(3000 * scale(), 5)); }
+TEST(Delaunay, ClusteredEqualsCgal) { expect_cgal_equal(testing::gen_points(gen::Kind::normal, 3000 * scale(), 5, 32)); }
 
 // The same point set in another order gives the same triangles (renamed).
 void expect_order_independent(const std::vector<Point>& pts, std::uint64_t seed) {
@@ -105,7 +112,7 @@ TEST(Delaunay, CocircularIndependentOfOrder) {
 }
 
 TEST(Delaunay, DuplicatesMergedAndReported) {
-  auto pts = testing::uniform_points(500, 7);
+  auto pts = testing::gen_points(gen::Kind::uniform, 500, 7);
   const std::size_t n = pts.size();
   std::mt19937_64 rng(8);
   for (std::size_t k = 0; k < 300; ++k) pts.push_back(pts[rng() % pts.size()]);
@@ -116,6 +123,8 @@ TEST(Delaunay, DuplicatesMergedAndReported) {
   // Without the duplicates: the triangles of the first n points.
   const std::vector<Point> first(pts.begin(), pts.begin() + n);
   EXPECT_TRUE(triangle_set(tr) == triangle_set(delaunay(first)));
+  pts.pop_back();  // CGAL gets the same points, all with w = 1
+  expect_cgal_equal(pts);
 }
 
 TEST(Delaunay, DuplicatesOnGrid) {
@@ -166,6 +175,28 @@ TEST(Delaunay, CollinearThenCocircular) {
   expect_cgal_equal(pts);
 }
 
+// gen's exact degeneracies: points exactly on the boundary of a square (collinear hull points),
+// a grid drawn with repetition, duplicates written with scales 1, 2, 4 (w != 1), exactly
+// collinear points, points exactly on the unit circle as [c, a, b].
+TEST(Delaunay, GenDegenerateKinds) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    expect_cgal_equal(testing::gen_points(gen::Kind::boundary, 400, seed));
+    expect_delaunay(delaunay(testing::gen_points(gen::Kind::grid, 2000, seed)));
+    const Triangulation tr = delaunay(testing::gen_points(gen::Kind::duplicates, 800, seed));
+    expect_delaunay(tr);
+    EXPECT_GE(tr.duplicates().size(), 700u);
+    const Triangulation line = delaunay(testing::gen_points(gen::Kind::segment, 100, seed));
+    EXPECT_EQ(line.dimension(), 1);
+    expect_delaunay(line);
+    gen::Options o;
+    o.n = 300;
+    o.seed = seed;
+    const auto circle = gen::points(gen::Kind::circle, o);  // exact [c, a, b]: cocircular
+    expect_delaunay(delaunay(circle));
+    expect_order_independent(circle, seed);
+  }
+}
+
 TEST(Delaunay, RejectsPointsNotInFront) {
   const std::vector<Point> pts = {Point::cartesian(0, 0), Point(-1, 0, 1), Point::cartesian(1, 0)};
   EXPECT_THROW(delaunay(pts), Undefined);
@@ -182,7 +213,7 @@ struct CountingKernel : DelaunayKernel {
 
 TEST(Delaunay, KernelTraceHooks) {
   CountingKernel k;
-  const auto pts = testing::uniform_points(1000, 11);
+  const auto pts = testing::gen_points(gen::Kind::uniform, 1000, 11);
   struct Ref {
     CountingKernel* k;
     static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
