@@ -118,7 +118,32 @@ struct Prepared {
 
 }  // namespace
 
+namespace {
+
+// Closes the fds a spec hands over to its child, once (on every path out of the start).
+struct Handover {
+  const std::vector<int>& fds;
+  bool done = false;
+  void close_all() {
+    if (done) return;
+    done = true;
+    for (int fd : fds) ::close(fd);
+  }
+  ~Handover() { close_all(); }
+};
+
+Result run_child(const Spec& spec, Handover& handover);
+
+}  // namespace
+
 Result run(const Spec& spec) {
+  Handover handover{spec.close_in_parent};
+  return run_child(spec, handover);
+}
+
+namespace {
+
+Result run_child(const Spec& spec, Handover& handover) {
   Result r;
   const auto start = Clock::now();
   if (spec.argv.empty()) {
@@ -210,6 +235,7 @@ Result run(const Spec& spec) {
     (void)n;
     _exit(127);
   }
+  handover.close_all();
   if (pid < 0) {
     pthread_sigmask(SIG_SETMASK, &old_mask, nullptr);
     r.error = std::string("cannot fork: ") + std::strerror(errno);
@@ -297,6 +323,8 @@ Result run(const Spec& spec) {
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return r;
 }
+
+}  // namespace
 
 std::vector<Result> run_all(const std::vector<Spec>& specs, int jobs) {
   std::vector<Result> results(specs.size());

@@ -42,6 +42,10 @@ struct Spec {
   std::filesystem::path err_file;               ///< when set, stderr goes to this file instead
   Limits limits;                                ///< resource and time limits
   std::vector<int> keep_fds;                    ///< fds the child inherits (all others closed)
+  std::vector<int> close_in_parent;             ///< fds handed over: closed in the caller once the
+                                                ///< child is started (or could not be); lets two
+                                                ///< children of run_all talk through pipes and see
+                                                ///< EOF when the other ends
 };
 
 /// How a run ended.

@@ -12,6 +12,7 @@
 #include "grader_core.hpp"
 #include "grader_release.hpp"
 #include "process.hpp"
+#include <nlohmann/json.hpp>
 #include "t2/io.hpp"
 
 #ifndef T2_SOURCE_DIR
@@ -61,18 +62,15 @@ int classroom(const fs::path& out) {
   t2grader::copy_tree(source_root(), out, true);
   check_no_leaks(out, out);
   write_release_note(out);
-  std::string tests;
-  const auto exs = t2grader::all_exercises(out / "exercises");
-  for (size_t i = 0; i < exs.size(); ++i) {
-    const auto& e = exs[i];
+  nlohmann::ordered_json tests = nlohmann::ordered_json::array();
+  for (const auto& e : t2grader::all_exercises(out / "exercises")) {
     const std::string id = e.id.substr(0, e.id.find('-'));
     // Classroom runs in the student's own repository: only the public tests exist there.
-    tests += fmt::format(
-        "    {{\"name\": {}, \"setup\": \"./build.sh\", \"run\": \"build/default/bin/t2 check {}\", "
-        "\"input\": \"\", \"output\": \"\", \"comparison\": \"included\", \"timeout\": 10, \"points\": 1}}{}\n",
-        t2grader::json_string(e.id + ": " + e.title), id, i + 1 < exs.size() ? "," : "");
+    tests.push_back({{"name", e.id + ": " + e.title}, {"setup", "./build.sh"}, {"run", "build/default/bin/t2 check " + id},
+                     {"input", ""}, {"output", ""}, {"comparison", "included"}, {"timeout", 10}, {"points", 1}});
   }
-  t2::write_file_atomically(out / ".github" / "classroom" / "autograding.json", "{\n  \"tests\": [\n" + tests + "  ]\n}\n");
+  t2::write_file_atomically(out / ".github" / "classroom" / "autograding.json",
+                            nlohmann::ordered_json{{"tests", tests}}.dump(2) + "\n");
   t2::write_file_atomically(out / ".github" / "workflows" / "classroom.yml",
                             "# GitHub Classroom autograding: the public tests of every exercise (t2 check).\n"
                             "# Hidden tests are graded by the instructor (t2 grade, or the Gradescope bundle).\n"

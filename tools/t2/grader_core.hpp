@@ -1,13 +1,19 @@
 #pragma once
 // The grader shared by `t2 check`, `t2 grade` and `t2 release`: exercises and their manifests,
-// building a submission against the prebuilt library, running each test in its own sandboxed,
-// resource-limited process, and reporting (plain words and Gradescope's results.json).
+// and one run of an exercise's tests on a submission. The parts live a file each:
+//   grader_exercise.cpp  manifests            grader_intake.cpp  copying the submission in
+//   grader_sandbox.cpp   the sandbox          grader_build.cpp   trusted objects, sandboxed build
+//   grader_elf.cpp       reading objects      grader_judge.cpp   driver and checker, verdicts
+//   grader_report.cpp    results.json, summaries
+// It does not depend on the command-line layer (command.hpp): its errors are GraderError.
 
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "grader_sandbox.hpp"
 
 namespace t2grader {
 
@@ -23,10 +29,13 @@ struct Exercise {
   std::string source;         ///< the file the student writes (stub in dir, reference in solution/)
   int time_limit = 10;        ///< seconds of CPU per test (wall clock: twice that plus 2)
   int memory_mb = 512;        ///< address-space limit per test
+  std::vector<std::string> forbidden;    ///< library names the submission must not refer to
   std::map<std::string, double> points;  ///< weight per test ("Suite.Name"); default 1
   double points_of(const std::string& test) const;  ///< weight of one test
   fs::path public_tests() const { return dir / "test_public.cpp"; }        ///< public tests
   fs::path hidden_tests() const { return dir / "hidden" / "test_hidden.cpp"; }  ///< hidden tests
+  fs::path remote() const { return dir / "remote.cpp"; }                  ///< the API over the wire
+  fs::path harness() const { return dir.parent_path() / "harness"; }      ///< driver/checker mains
   fs::path stub() const { return dir / source; }                          ///< the stub
   fs::path solution_dir() const { return dir / "solution"; }              ///< reference
 };
@@ -35,26 +44,19 @@ struct Exercise {
 fs::path exercises_root(const std::optional<std::string>& override_dir);
 /// Every exercise (folders named NN-slug holding exercise.txt), sorted.
 std::vector<Exercise> all_exercises(const fs::path& root);
-/// The exercise named by "NN", "NN-slug" or a path; throws UsageError when there is none.
+/// The exercise named by "NN", "NN-slug" or a path; throws GraderError when there is none.
 Exercise find_exercise(const fs::path& root, const std::string& name);
 /// Reads and checks a manifest; throws t2::BadInput naming the file and line.
 Exercise read_exercise(const fs::path& dir);
-
-/// What protects the machine while student code runs.
-struct Sandbox {
-  bool bwrap = false;       ///< bubblewrap works here
-  std::string description;  ///< one line, said plainly in every report
-};
-/// Probes bubblewrap once (T2_GRADER_NO_BWRAP=1 forces the rlimit-only mode).
-const Sandbox& sandbox();
 
 /// The outcome of one test.
 struct TestResult {
   std::string name;          ///< "Suite.Name"
   bool hidden = false;       ///< from the hidden tests
-  bool passed = false;       ///< decided from the per-run secret and the exit status only
+  bool passed = false;       ///< decided by the checker, a trusted process
   double max_score = 1;      ///< the weight
-  std::string what;          ///< what happened, in plain words (crash, timeout, failed ...)
+  std::string what;          ///< how it ended; for hidden tests only passed, failed, crashed,
+                             ///< timed out or output limit
   std::string detail;        ///< failure messages of the test (public tests only)
 };
 
@@ -62,9 +64,10 @@ struct TestResult {
 struct Report {
   Exercise exercise;
   bool compiled = false;
-  std::string compiler_output;     ///< shortened compiler messages when it did not compile
+  std::string compiler_output;     ///< shortened compiler messages, or why the submission was refused
   std::vector<TestResult> tests;
   bool overall_timeout = false;    ///< the overall limit stopped the run
+  std::string protection;          ///< what protected the machine, as probed
   double score() const;            ///< points earned
   double max_score() const;        ///< points possible
 };
@@ -73,22 +76,20 @@ struct Report {
 struct RunOptions {
   bool include_hidden = false;     ///< grade (public + hidden) or check (public only)
   int overall_limit = 900;         ///< seconds for the whole run, builds included
+  int compile_limit = 120;         ///< wall-clock seconds for compiling and linking the submission
   bool verbose = false;            ///< print progress to stderr
   int time_limit = 0;              ///< seconds of CPU per test; 0: the manifest's
 };
 
-/// Builds `submission_dir`/<source> against the exercise's tests and runs every test.
+/// Builds `submission_dir`/<source> in the sandbox and judges every test.
 Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const RunOptions& opt);
 
-/// Gradescope's results.json for a report (hidden tests say only what happened, never details).
+/// Gradescope's results.json for a report (hidden tests say only how they ended).
 /// `hidden_visibility` is "hidden" or "after_due_date".
 std::string results_json(const Report& r, const std::string& hidden_visibility = "hidden");
 /// The human summary of `t2 grade`.
 std::string grade_summary(const Report& r);
 /// The plain-words report of `t2 check` (public tests, hints, what to try next).
 std::string check_summary(const Report& r);
-
-/// JSON string literal with escapes.
-std::string json_string(const std::string& s);
 
 }  // namespace t2grader

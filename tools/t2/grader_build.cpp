@@ -1,0 +1,312 @@
+// Building for the grader: see grader_build.hpp.
+#include "grader_build.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "grader_elf.hpp"
+#include "process.hpp"
+
+#ifndef T2_SOURCE_DIR
+#define T2_SOURCE_DIR "."
+#endif
+#ifndef T2_BINARY_DIR
+#define T2_BINARY_DIR "./build"
+#endif
+
+namespace t2grader {
+
+namespace {
+
+fs::path lib_include_dir() { return fs::path(T2_SOURCE_DIR) / "lib" / "include"; }
+
+bool sanitized_tool() {
+#if defined(__SANITIZE_ADDRESS__)
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string run_out(std::vector<std::string> argv) {
+  t2proc::Spec s;
+  s.argv = std::move(argv);
+  s.err = t2proc::Stream::discard;
+  s.limits.wall_seconds = 60;
+  const auto r = t2proc::run(s);
+  return r.ok() ? r.out : std::string();
+}
+
+std::string sha256(const fs::path& p) { return run_out({"sha256sum", "--", p.string()}).substr(0, 64); }
+
+// Everything a trusted build depends on besides its own sources.
+std::uint64_t toolchain_key() {
+  static const std::uint64_t k = [] {
+    std::uint64_t h = fnv1a(run_out({"g++", "--version"}));
+    std::vector<fs::path> hs;
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(lib_include_dir(), ec); it != fs::recursive_directory_iterator(); it.increment(ec))
+      if (it->is_regular_file()) hs.push_back(it->path());
+    std::sort(hs.begin(), hs.end());
+    for (const auto& p : hs) h = fnv1a(p.string() + read_text(p), h);
+    return fnv1a(sanitized_tool() ? "asan" : "plain", h);
+  }();
+  return k;
+}
+
+// The cache folder, when it is ours and only ours to write; else the run's private folder.
+fs::path cache_dir(const fs::path& work) {
+  const fs::path c = fs::path(T2_BINARY_DIR) / "grader-cache";
+  std::error_code ec;
+  fs::create_directories(c, ec);
+  struct stat st{};
+  if (::lstat(c.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == ::geteuid() && !(st.st_mode & 022) &&
+      ::access(c.c_str(), W_OK) == 0)
+    return c;
+  ::chmod(c.c_str(), 0755);
+  if (::lstat(c.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == ::geteuid() && !(st.st_mode & 022)) return c;
+  return work;
+}
+
+std::string random_tag() {
+  std::random_device rd;
+  return fmt::format("{:08x}", rd());
+}
+
+// The cached file `stem`-`key`, verified by its SHA-256; made by `make(tmp)` when missing or changed.
+template <class Make>
+fs::path cached(const fs::path& work, const std::string& stem, std::uint64_t key, Make make) {
+  const fs::path dir = cache_dir(work);
+  const fs::path f = dir / fmt::format("{}-{:016x}", stem, key), sum = f.string() + ".sha256";
+  std::error_code ec;
+  if (fs::is_regular_file(f, ec) && fs::is_regular_file(sum, ec) && !fs::is_symlink(f, ec)) {
+    const std::string want = read_text(sum), got = sha256(f);
+    if (want.size() == 64 && got == want) return f;
+  }
+  const fs::path tmp = dir / fmt::format("{}.tmp{}-{}", f.filename().string(), ::getpid(), random_tag());
+  make(tmp);
+  const std::string got = sha256(tmp);
+  if (got.size() != 64) throw GraderError("cannot hash " + tmp.string());
+  const fs::path sum_tmp = tmp.string() + ".sha256";
+  std::ofstream(sum_tmp) << got;
+  fs::rename(tmp, f, ec);
+  if (!ec) fs::rename(sum_tmp, sum, ec);
+  if (ec) return tmp;
+  return f;
+}
+
+const std::vector<std::string>& trusted_flags() {
+  static const std::vector<std::string> f = {"-std=c++20", "-O1", "-g0", "-w"};
+  return f;
+}
+
+std::vector<std::string> link_libraries(bool with_gtest) {
+  std::vector<std::string> l = {library_archive().string()};
+  if (with_gtest) l.push_back("-lgtest");
+  for (const char* x : {"-lgmpxx", "-lgmp", "-lfmt", "-lcairo", "-lpthread"}) l.push_back(x);
+  return l;
+}
+
+// A trusted object: `src` compiled with `defines` and the include folders `inc`.
+fs::path trusted_object(const fs::path& src, const std::vector<std::string>& defines, const std::vector<fs::path>& inc,
+                        const fs::path& work) {
+  std::string key = read_text(src);
+  for (const auto& d : defines) key += " " + d;
+  for (const auto& i : inc)
+    for (const auto& e : fs::directory_iterator(i))
+      if (e.path().extension() == ".hpp") key += read_text(e.path());
+  key += fmt::format("{}", fmt::join(trusted_flags(), " "));
+  const std::string stem = src.parent_path().filename().string() + "-" + src.stem().string() + (defines.empty() ? "" : "-c");
+  return cached(work, stem + ".o", fnv1a(key, toolchain_key()), [&](const fs::path& tmp) {
+    t2proc::Spec s;
+    s.argv = {"g++"};
+    s.argv.insert(s.argv.end(), trusted_flags().begin(), trusted_flags().end());
+    s.argv.insert(s.argv.end(), defines.begin(), defines.end());
+    s.argv.insert(s.argv.end(), {"-I", lib_include_dir().string()});
+    for (const auto& i : inc) s.argv.insert(s.argv.end(), {"-I", i.string()});
+    s.argv.insert(s.argv.end(), {"-c", src.string(), "-o", tmp.string()});
+    s.limits.wall_seconds = 600;
+    s.limits.output_bytes = 8000;
+    const auto r = t2proc::run(s);
+    if (!r.ok()) throw GraderError(fmt::format("internal error: {} does not compile:\n{}{}", src.string(), r.error, r.err));
+  });
+}
+
+// A trusted program linked from trusted objects.
+fs::path trusted_program(const std::string& stem, const std::vector<fs::path>& objs, bool gtest, const fs::path& work) {
+  std::string key = sha256(library_archive());
+  for (const auto& o : objs) key += o.filename().string();
+  return cached(work, stem, fnv1a(key, toolchain_key()), [&](const fs::path& tmp) {
+    t2proc::Spec s;
+    s.argv = {"g++"};
+    if (sanitized_tool()) s.argv.push_back("-fsanitize=address,undefined");
+    for (const auto& o : objs) s.argv.push_back(o.string());
+    const auto libs = link_libraries(gtest);
+    s.argv.insert(s.argv.end(), libs.begin(), libs.end());
+    s.argv.insert(s.argv.end(), {"-o", tmp.string()});
+    s.limits.wall_seconds = 600;
+    s.limits.output_bytes = 8000;
+    const auto r = t2proc::run(s);
+    if (!r.ok()) throw GraderError(fmt::format("internal error: {} does not link:\n{}{}", stem, r.error, r.err));
+  });
+}
+
+std::string shorten(const std::string& out) {
+  std::string s = out;
+  for (const std::string w : {"/src/", "/out/", "/t2/obj/", "/t2/include/"})
+    for (size_t p; (p = s.find(w)) != std::string::npos;) s.erase(p, w.size());
+  std::istringstream in(s);
+  std::string line, errors, all;
+  int n = 0, ne = 0;
+  while (std::getline(in, line)) {
+    if (n++ < 25) all += line + "\n";
+    if (line.find("error") != std::string::npos && ne++ < 12) errors += line + "\n";
+  }
+  std::string r = errors.empty() ? all : errors;
+  if (r.size() > 3000) r = r.substr(0, 3000) + "...\n";
+  return r;
+}
+
+// Reads a file the sandbox wrote: a regular file only (never through a symlink), at most `cap` bytes.
+bool read_untrusted(const fs::path& p, std::string& out, size_t cap) {
+  const int fd = ::open(p.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st{};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || static_cast<size_t>(st.st_size) > cap) {
+    ::close(fd);
+    return false;
+  }
+  out.clear();
+  char buf[65536];
+  for (ssize_t n; (n = ::read(fd, buf, sizeof buf)) > 0 && out.size() <= cap;) out.append(buf, static_cast<size_t>(n));
+  ::close(fd);
+  return out.size() <= cap;
+}
+
+}  // namespace
+
+fs::path library_archive() {
+  const fs::path a = fs::path(T2_BINARY_DIR) / "lib" / "libt2.a";
+  if (!fs::exists(a)) throw GraderError(fmt::format("the library {} is not built: run ./build.sh first", a.string()));
+  return a;
+}
+
+TrustedParts build_trusted(const Exercise& ex, bool hidden, const fs::path& work) {
+  TrustedParts t;
+  const fs::path h = ex.harness();
+  t.probe = trusted_program("probe", {trusted_object(h / "probe.cpp", {}, {}, work)}, false, work);
+  const std::vector<fs::path> inc = {h, ex.dir};
+  const fs::path checker_main = trusted_object(h / "checker_main.cpp", {}, {h}, work);
+  const fs::path remote_checker = trusted_object(ex.remote(), {"-DT2_JUDGE_CHECKER"}, inc, work);
+  auto checker = [&](const fs::path& tests, const std::string& tag) {
+    const fs::path o = trusted_object(tests, {}, inc, work);
+    return trusted_program(ex.id + "-checker-" + tag, {checker_main, remote_checker, o}, true, work);
+  };
+  t.checker_public = checker(ex.public_tests(), "public");
+  if (hidden) t.checker_hidden = checker(ex.hidden_tests(), "hidden");
+  t.driver_objects = {trusted_object(h / "driver_main.cpp", {}, {h}, work), trusted_object(ex.remote(), {}, inc, work)};
+  return t;
+}
+
+StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::path& src_dir,
+                           const fs::path& out_dir, double wall_seconds) {
+  StudentBuild b;
+  const auto start = std::chrono::steady_clock::now();
+  fs::create_directories(out_dir);
+  if (::geteuid() == 0 && ::chown(out_dir.c_str(), sandbox_uid(), sandbox_uid()) != 0)
+    throw GraderError("cannot hand the build folder to the sandbox's user");
+  SandboxRun r;
+  r.read_only = {{lib_include_dir(), "/t2/include"}, {src_dir, "/src"}, {library_archive(), "/t2/lib/libt2.a"}};
+  std::vector<std::string> objs;
+  for (size_t i = 0; i < t.driver_objects.size(); ++i) {
+    const std::string inside = fmt::format("/t2/obj/part{}.o", i);
+    r.read_only.push_back({t.driver_objects[i], inside});
+    objs.push_back(inside);
+  }
+  r.writable = {{out_dir, "/out"}};
+  r.limits.memory_bytes = sanitized_tool() ? 0 : 4096ull << 20;
+  r.limits.file_bytes = 256ull << 20;
+  r.limits.output_bytes = 64 << 10;
+  r.tree_memory_bytes = 4096ull << 20;
+  r.tmp_bytes = 512ull << 20;
+  auto step = [&](std::vector<std::string> argv) {
+    r.argv = std::move(argv);
+    const double left = wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.limits.wall_seconds = std::max(1.0, left);
+    r.limits.cpu_seconds = r.limits.wall_seconds;
+    const auto res = run_sandboxed(r);
+    if (res.timed_out || res.signal == SIGXCPU) {
+      b.timed_out = true;
+      b.messages = fmt::format("the compiler ran out of time (the limit for compiling and linking is {:.0f} s)", wall_seconds);
+      return false;
+    }
+    if (!res.ok()) {
+      b.messages = shorten(res.err + res.out + res.error);
+      return false;
+    }
+    return true;
+  };
+  if (!step({"g++", "-std=c++20", "-O0", "-fno-lto", "-Wall", "-I", "/t2/include", "-I", "/src", "-c",
+             "/src/" + ex.source, "-o", "/out/student.o"}))
+    return b;
+  std::string bytes;
+  if (!read_untrusted(out_dir / "student.o", bytes, 256u << 20)) {
+    b.refused = true;
+    b.messages = "the compiled object is missing or is not a regular file";
+    return b;
+  }
+  if (const std::string why = refuse_object(read_object(bytes), ex.forbidden); !why.empty()) {
+    b.refused = true;
+    b.messages = why;
+    return b;
+  }
+  std::vector<std::string> link = {"g++", "-fno-lto", "-fno-use-linker-plugin"};
+  if (sanitized_tool()) link.push_back("-fsanitize=address,undefined");
+  link.push_back("/out/student.o");
+  link.insert(link.end(), objs.begin(), objs.end());
+  for (auto l : link_libraries(false)) link.push_back(l == library_archive().string() ? "/t2/lib/libt2.a" : l);
+  link.insert(link.end(), {"-o", "/out/driver"});
+  if (!step(link)) {
+    b.messages = "the code does not link (a function of " + ex.header + " is missing or defined twice?):\n" + b.messages;
+    return b;
+  }
+  // The driver as the sandbox wrote it, copied to a folder only the grader writes.
+  std::string exe;
+  if (!read_untrusted(out_dir / "driver", exe, 512u << 20)) {
+    b.messages = "the linked program is missing or is not a regular file";
+    return b;
+  }
+  b.driver = out_dir.parent_path() / "driver.bin";
+  std::ofstream(b.driver, std::ios::binary) << exe;
+  fs::permissions(b.driver, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec);
+  b.ok = true;
+  return b;
+}
+
+}  // namespace t2grader

@@ -1,0 +1,211 @@
+// Judging: run_exercise (see grader_core.hpp). For each test two processes run side by side and
+// talk through two pipes: the checker (trusted: the tests and their oracles, never linked with
+// student code) sends the calls and decides the verdict; the driver (the student's functions,
+// in the sandbox) only answers. How the driver ended names the verdict when it stopped answering.
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "grader_build.hpp"
+#include "grader_core.hpp"
+#include "grader_intake.hpp"
+#include "process.hpp"
+
+namespace t2grader {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string t = (fs::temp_directory_path() / "t2grade-XXXXXX").string();
+    if (!mkdtemp(t.data())) throw GraderError("cannot create a temporary directory");
+    path = t;
+    fs::permissions(path, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);  // traversable by the sandbox
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+std::vector<std::string> list_tests(const fs::path& checker) {
+  t2proc::Spec s;
+  s.argv = {checker.string(), "--t2-list"};
+  s.limits.wall_seconds = 60;
+  const auto r = t2proc::run(s);
+  if (!r.ok()) throw GraderError("internal error: cannot list the tests of " + checker.string() + ": " + r.error + r.err);
+  std::vector<std::string> names;
+  std::istringstream in(r.out);
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty()) names.push_back(l);
+  return names;
+}
+
+std::string signal_words(int sig) {
+  switch (sig) {
+    case SIGSEGV:
+      return "crashed with a segmentation fault (SIGSEGV): a bad pointer or index, or a stack overflow from runaway recursion";
+    case SIGBUS: return "crashed with a bus error (SIGBUS): a bad pointer";
+    case SIGABRT: return "aborted (SIGABRT): an assert failed, or std::terminate was called";
+    case SIGFPE: return "crashed with an arithmetic error (SIGFPE): an integer division by zero?";
+    case SIGXCPU: return "used more than its CPU time and was stopped: an infinite loop?";
+    case SIGXFSZ: return "wrote a file larger than allowed and was stopped";
+    case SIGKILL: return "was killed (SIGKILL): it exceeded its memory or process limit";
+    default: return fmt::format("was killed by signal {} ({})", sig, strsignal(sig));
+  }
+}
+
+struct Pipe {
+  int r = -1, w = -1;
+  Pipe() {
+    int p[2];
+    if (pipe2(p, O_CLOEXEC) != 0) throw GraderError("cannot create a pipe");
+    r = p[0];
+    w = p[1];
+  }
+};
+
+// One test: the checker and the driver side by side.
+void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, int cpu_s, int memory_mb, double wall) {
+  Pipe calls, answers;
+  t2proc::Spec c;
+  c.argv = {checker.string(), fmt::format("--t2-calls={}", calls.w), fmt::format("--t2-answers={}", answers.r),
+            "--gtest_filter=" + t.name};
+  c.keep_fds = c.close_in_parent = {calls.w, answers.r};
+  c.limits.wall_seconds = wall + 10;
+  c.limits.output_bytes = 16 << 10;
+  c.err = t2proc::Stream::discard;
+  SandboxRun d;
+  d.argv = {"/t2/driver", fmt::format("--t2-calls={}", calls.r), fmt::format("--t2-answers={}", answers.w)};
+  d.read_only = {{driver, "/t2/driver"}};
+  d.handover_fds = {calls.r, answers.w};
+  d.limits.cpu_seconds = cpu_s;
+  d.limits.wall_seconds = wall;
+  d.limits.memory_bytes = static_cast<std::uint64_t>(memory_mb) << 20;
+#if defined(__SANITIZE_ADDRESS__)
+  d.limits.memory_bytes = 0;  // the sanitizers' shadow memory needs terabytes of address space
+#endif
+  d.limits.file_bytes = 16u << 20;
+  d.tree_memory_bytes = (static_cast<std::uint64_t>(memory_mb) + 128) << 20;
+  d.tmp_bytes = 64u << 20;
+  d.out = d.err = t2proc::Stream::discard;  // printing costs nothing and counts for nothing
+  const Prepared dp = prepare_sandboxed(d);
+  const auto rs = t2proc::run_all({c, dp.spec}, 2);
+  const t2proc::Result &cr = rs[0], &dr = rs[1];
+  std::istringstream rec(cr.out);
+  std::string verdict, messages;
+  std::getline(rec, verdict);
+  messages.assign(std::istreambuf_iterator<char>(rec), {});
+  if (verdict == "PASS" && cr.ok()) {
+    t.passed = true;
+    t.what = "passed";
+  } else if (verdict == "LIMIT") {
+    t.what = "output limit";
+  } else if (verdict == "GONE" || !cr.ok()) {
+    if (dr.timed_out || dr.signal == SIGXCPU || (cr.timed_out && !dr.ok())) {
+      t.what = "timed out";
+      if (!t.hidden) t.detail = fmt::format("still running after {:.0f} s (an infinite loop, or waiting for input?)", wall);
+    } else if (dr.signal != 0) {
+      t.what = "crashed";
+      if (!t.hidden) t.detail = "your code " + signal_words(dr.signal);
+    } else {
+      t.what = "failed";
+      if (!t.hidden)
+        t.detail = fmt::format("your code stopped before the test finished (exit status {}): does it call exit() or abort()?",
+                               dr.exit_code);
+    }
+  } else {
+    t.what = "failed";
+    if (!t.hidden) {
+      t.detail = messages;
+      if (messages.find("not implemented yet") != std::string::npos) t.what = "failed: not implemented yet";
+    }
+  }
+  if (!t.hidden && !t.detail.empty() && t.what != "failed" && t.what.rfind("failed:", 0) != 0)
+    t.what += ": " + t.detail.substr(0, t.detail.find('\n')), t.detail.clear();
+}
+
+}  // namespace
+
+double Report::score() const {
+  double s = 0;
+  for (const auto& t : tests) s += t.passed ? t.max_score : 0;
+  return s;
+}
+double Report::max_score() const {
+  double s = 0;
+  for (const auto& t : tests) s += t.max_score;
+  return s;
+}
+
+Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const RunOptions& opt) {
+  Report rep;
+  rep.exercise = ex;
+  const auto start = Clock::now();
+  auto remaining = [&] { return opt.overall_limit - std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto say = [&](const std::string& s) {
+    if (opt.verbose) fmt::print(stderr, "{}\n", s);
+  };
+  if (opt.include_hidden && !fs::exists(ex.hidden_tests()))
+    throw GraderError(fmt::format("{} has no hidden tests (is this a student release?): grading needs the instructor's tree; "
+                                  "`t2 check {}` runs the public tests",
+                                  ex.id, ex.id.substr(0, ex.id.find('-'))));
+  library_archive();
+  TempDir tmp;
+  say("building the tests (cached after the first time)");
+  const TrustedParts parts = build_trusted(ex, opt.include_hidden, tmp.path);
+  std::vector<fs::path> secrets = {ex.solution_dir() / ex.source, parts.checker_public};
+  if (opt.include_hidden) secrets.push_back(ex.hidden_tests());
+  const Sandbox& box = sandbox(parts.probe, secrets);
+  rep.protection = box.description;
+  for (const auto& n : list_tests(parts.checker_public)) rep.tests.push_back({n, false, false, ex.points_of(n), "", ""});
+  if (opt.include_hidden)
+    for (const auto& n : list_tests(parts.checker_hidden)) rep.tests.push_back({n, true, false, ex.points_of(n), "", ""});
+  if (rep.tests.empty()) throw GraderError("internal error: no tests found for " + ex.id);
+  if (!box.works) throw GraderError("refusing to run student code: " + box.description);
+
+  auto fail_all = [&](const std::string& what) {
+    for (auto& t : rep.tests) t.what = what;
+    return rep;
+  };
+  if (const std::string why = take_in(ex, submission_dir, tmp.path / "src"); !why.empty()) {
+    rep.compiler_output = why;
+    return fail_all("not run: the submission was refused");
+  }
+  say("compiling " + ex.source + " in the sandbox");
+  const StudentBuild b = build_student(ex, parts, tmp.path / "src", tmp.path / "out",
+                                       std::min<double>(opt.compile_limit, std::max(1.0, remaining())));
+  if (!b.ok) {
+    rep.compiler_output = b.messages;
+    rep.overall_timeout = b.timed_out && remaining() <= 0;
+    return fail_all(b.refused ? "not run: " + b.messages.substr(0, b.messages.find(';'))
+                              : b.timed_out ? "not run: compiling ran out of time" : "not run: the code does not compile");
+  }
+  rep.compiled = true;
+  const int cpu = opt.time_limit > 0 ? opt.time_limit : ex.time_limit;
+  int k = 0;
+  for (auto& t : rep.tests) {
+    ++k;
+    const double left = remaining();
+    if (left <= 1) {
+      rep.overall_timeout = true;
+      t.what = "not run: the overall time limit of the grading run ran out";
+      continue;
+    }
+    say(fmt::format("running {} ({}/{})", t.name, k, rep.tests.size()));
+    judge_one(t, t.hidden ? parts.checker_hidden : parts.checker_public, b.driver, cpu, ex.memory_mb,
+              std::min(2.0 * cpu + 2, left));
+  }
+  return rep;
+}
+
+}  // namespace t2grader

@@ -1,0 +1,232 @@
+// The grader's sandbox: see grader_sandbox.hpp.
+#include "grader_sandbox.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sched.h>
+#include <seccomp.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace t2grader {
+
+namespace {
+
+// System calls no graded program needs and every escape uses.
+constexpr const char* kDenied[] = {
+    "mount", "umount2", "unshare", "setns", "ptrace", "open_by_handle_at", "name_to_handle_at",
+    "bpf", "keyctl", "add_key", "request_key", "pivot_root", "chroot", "kexec_load",
+    "kexec_file_load", "init_module", "finit_module", "delete_module", "perf_event_open",
+    "userfaultfd", "fsopen", "fsmount", "fsconfig", "move_mount", "open_tree", "mount_setattr",
+    "process_vm_readv", "process_vm_writev", "swapon", "swapoff", "reboot", "acct", "quotactl"};
+
+// The seccomp program (BPF), built once with libseccomp.
+const std::string& seccomp_program() {
+  static const std::string prog = [] {
+    scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
+    if (!ctx) throw GraderError("libseccomp: cannot create a filter");
+    for (const char* name : kDenied) {
+      const int nr = seccomp_syscall_resolve_name(name);
+      if (nr != __NR_SCMP_ERROR) seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), nr, 0);
+    }
+    // New namespaces through clone: refused flag by flag; clone3 (flags in memory) not at all,
+    // so that the C library falls back to clone.
+    for (unsigned long flag : {CLONE_NEWUSER, CLONE_NEWNS, CLONE_NEWNET, CLONE_NEWPID, CLONE_NEWIPC,
+                               CLONE_NEWUTS, CLONE_NEWCGROUP})
+      seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag));
+    seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
+    const int fd = memfd_create("t2-seccomp", MFD_CLOEXEC);
+    std::string bytes;
+    if (fd >= 0 && seccomp_export_bpf(ctx, fd) == 0 && lseek(fd, 0, SEEK_SET) == 0) {
+      char buf[4096];
+      for (ssize_t n; (n = read(fd, buf, sizeof buf)) > 0;) bytes.append(buf, static_cast<size_t>(n));
+    }
+    if (fd >= 0) close(fd);
+    seccomp_release(ctx);
+    if (bytes.empty()) throw GraderError("libseccomp: cannot export the filter");
+    return bytes;
+  }();
+  return prog;
+}
+
+// A fresh fd holding the seccomp program at offset 0 (bubblewrap reads it to the end).
+int seccomp_fd() {
+  const int fd = memfd_create("t2-seccomp", MFD_CLOEXEC);
+  if (fd < 0) throw GraderError("cannot create a memfd for the seccomp filter");
+  const std::string& p = seccomp_program();
+  if (write(fd, p.data(), p.size()) != static_cast<ssize_t>(p.size()) || lseek(fd, 0, SEEK_SET) != 0) {
+    close(fd);
+    throw GraderError("cannot write the seccomp filter");
+  }
+  return fd;
+}
+
+bool write_text(const fs::path& f, const std::string& s) {
+  std::ofstream o(f);
+  o << s;
+  o.flush();
+  return static_cast<bool>(o);
+}
+
+// A cgroup (v2, else v1 memory + pids + cpu) for the whole tree of one run, removed afterwards.
+class Cgroup {
+ public:
+  Cgroup(std::uint64_t memory, int pids) {
+    static std::atomic<int> serial{0};
+    const std::string name = fmt::format("t2grade-{}-{}", getpid(), serial++);
+    const fs::path root = "/sys/fs/cgroup";
+    std::error_code ec;
+    if (fs::exists(root / "cgroup.controllers", ec)) {
+      write_text(root / "cgroup.subtree_control", "+memory +pids +cpu");
+      add(root / name, {{"pids.max", std::to_string(pids)}, {"cpu.max", "100000 100000"}});
+      if (memory) add(root / name, {{"memory.max", std::to_string(memory)}, {"memory.swap.max", "0"}});
+    } else {
+      add(root / "pids" / name, {{"pids.max", std::to_string(pids)}});
+      if (memory) add(root / "memory" / name, {{"memory.limit_in_bytes", std::to_string(memory)}});
+      add(root / "cpu" / name, {{"cpu.cfs_period_us", "100000"}, {"cpu.cfs_quota_us", "100000"}});
+    }
+  }
+  Cgroup(const Cgroup&) = delete;
+  Cgroup& operator=(const Cgroup&) = delete;
+  ~Cgroup() {
+    for (const auto& d : dirs_) {
+      // Whatever is left (nothing, normally: the pid namespace died with its first process).
+      std::ifstream procs(d / "cgroup.procs");
+      for (long pid; procs >> pid;) kill(static_cast<pid_t>(pid), SIGKILL);
+      for (int i = 0; i < 100 && rmdir(d.c_str()) != 0 && errno == EBUSY; ++i) usleep(10000);
+    }
+  }
+  /// The cgroup.procs files to write the child's pid into.
+  std::vector<std::string> procs() const {
+    std::vector<std::string> r;
+    for (const auto& d : dirs_) r.push_back((d / "cgroup.procs").string());
+    return r;
+  }
+
+ private:
+  std::vector<fs::path> dirs_;
+  void add(const fs::path& d, const std::vector<std::pair<std::string, std::string>>& settings) {
+    std::error_code ec;
+    const bool fresh = fs::create_directory(d, ec) && !ec;
+    if (!fresh && std::find(dirs_.begin(), dirs_.end(), d) == dirs_.end()) return;
+    if (fresh) dirs_.push_back(d);
+    for (const auto& [file, value] : settings) write_text(d / file, value);
+  }
+};
+
+bool running_as_root() { return geteuid() == 0; }
+
+// The system folders of the host, read-only (merged-/usr hosts have symlinks instead).
+void system_binds(std::vector<std::string>& a) {
+  a.insert(a.end(), {"--ro-bind", "/usr", "/usr"});
+  for (const char* d : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {
+    std::error_code ec;
+    if (fs::is_symlink(d, ec)) a.insert(a.end(), {"--symlink", fs::read_symlink(d, ec).string(), d});
+    else if (fs::is_directory(d, ec)) a.insert(a.end(), {"--ro-bind", d, d});
+  }
+  for (const char* f : {"/etc/ld.so.cache", "/etc/alternatives"}) a.insert(a.end(), {"--ro-bind-try", f, f});
+}
+
+}  // namespace
+
+unsigned sandbox_uid() {
+  // As root: a uid of its own per grading process (so that RLIMIT_NPROC counts this run only).
+  static const unsigned uid = running_as_root() ? 1900000000u + static_cast<unsigned>(getpid()) % 1000000u
+                                                : static_cast<unsigned>(getuid());
+  return uid;
+}
+
+Prepared prepare_sandboxed(const SandboxRun& r) {
+  const int sfd = seccomp_fd();
+  std::vector<std::string> a;
+  std::shared_ptr<Cgroup> cg;
+  if (running_as_root()) {
+    cg = std::make_shared<Cgroup>(r.tree_memory_bytes, r.tree_processes);
+    const auto procs = cg->procs();
+    if (!procs.empty()) {
+      a = {"/bin/sh", "-c", "while [ \"$1\" != -- ]; do echo $$ > \"$1\" || exit 125; shift; done; shift; exec \"$@\"", "t2-cgroup"};
+      a.insert(a.end(), procs.begin(), procs.end());
+      a.push_back("--");
+    }
+    const std::string u = std::to_string(sandbox_uid());
+    a.insert(a.end(), {"setpriv", "--reuid", u, "--regid", u, "--clear-groups", "--inh-caps=-all",
+                       "--bounding-set=-all", "--"});
+  }
+  a.insert(a.end(), {"bwrap", "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent",
+                     "--new-session", "--cap-drop", "ALL"});
+  system_binds(a);
+  a.insert(a.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(r.tmp_bytes), "--tmpfs", "/tmp"});
+  for (const auto& [host, inside] : r.read_only) a.insert(a.end(), {"--ro-bind", host.string(), inside.string()});
+  for (const auto& [host, inside] : r.writable) a.insert(a.end(), {"--bind", host.string(), inside.string()});
+  a.insert(a.end(), {"--chdir", r.chdir, "--seccomp", std::to_string(sfd), "--"});
+  a.insert(a.end(), r.argv.begin(), r.argv.end());
+  t2proc::Spec s;
+  s.argv = std::move(a);
+  s.env = std::vector<std::string>{"PATH=/usr/bin:/bin", "HOME=/tmp", "TMPDIR=/tmp", "LANG=C", "LC_ALL=C"};
+  s.out = r.out;
+  s.err = r.err;
+  s.limits = r.limits;
+  if (s.limits.processes == 0) s.limits.processes = r.tree_processes;
+  s.keep_fds = r.handover_fds;
+  s.keep_fds.push_back(sfd);
+  s.close_in_parent = s.keep_fds;
+  return {std::move(s), cg};
+}
+
+t2proc::Result run_sandboxed(const SandboxRun& r) {
+  const Prepared p = prepare_sandboxed(r);
+  return t2proc::run(p.spec);
+}
+
+const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secrets) {
+  static std::mutex m;
+  static std::unique_ptr<Sandbox> done;
+  std::lock_guard<std::mutex> lock(m);
+  if (done) return *done;
+  Sandbox s;
+  SandboxRun r;
+  r.argv = {"/t2/probe"};
+  for (const auto& p : secrets) r.argv.push_back(p.string());
+  r.read_only = {{probe, "/t2/probe"}};
+  r.limits.wall_seconds = 30;
+  r.limits.output_bytes = 8192;
+  r.tree_memory_bytes = 256u << 20;
+  const t2proc::Result res = run_sandboxed(r);
+  s.probe_output = res.out;
+  std::map<std::string, std::string> f;
+  std::istringstream in(res.out);
+  for (std::string l; std::getline(in, l);)
+    if (const auto eq = l.find('='); eq != std::string::npos) f[l.substr(0, eq)] = l.substr(eq + 1);
+  const std::string secrets_ok = fmt::format("{}/{}", secrets.size(), secrets.size());
+  s.works = res.ok() && f["uid"] != "" && f["uid"] != "0" && f["caps"] == "none" && f["write_usr"] == "no" &&
+            f["remount_usr"] == "no" && f["new_userns"] == "no" && f["network_interfaces"] == "0" &&
+            f["secrets_unreadable"] == secrets_ok;
+  if (!res.ok()) {
+    s.mode = "bubblewrap does not work here: " + (res.error.empty() ? res.err.substr(0, 300) : res.error);
+    s.description = "no sandbox (" + s.mode + "): student code is not run";
+  } else {
+    s.mode = fmt::format("bubblewrap as uid {}{}", f["uid"], running_as_root() ? " (setpriv from root)" : "");
+    s.description = fmt::format(
+        "{}; probed inside: capabilities {}, seccomp {}, /usr writable {}, remount {}, new user "
+        "namespace {}, network interfaces {}, hidden files unreadable {}, /tmp tmpfs {} MB, process limit {}",
+        s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
+        f["network_interfaces"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
+    if (!s.works) s.description = "UNSAFE sandbox, student code is not run: " + s.description;
+  }
+  done = std::make_unique<Sandbox>(s);
+  return *done;
+}
+
+}  // namespace t2grader
