@@ -1,6 +1,14 @@
 // The grader against hostile submissions, its reports (results.json, t2 check), its sandbox,
 // and the releases (nothing secret in the student tree, by content).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <iterator>
+#include <map>
 
 #include <filesystem>
 #include <fstream>
@@ -23,108 +31,202 @@ const fs::path kHostile = kExercises / "_hostile";
 // These tests also run under the ASan preset: the tool is then sanitized, and so are the
 // programs it builds (libt2.a needs the sanitizer runtime); the grader's reports stay the same.
 
-bool bwrap_in_force() {
-  const Ran r = run("'" + kTool + "' grade 01 --submission '" + (kExercises / "01-t2-plane").string() + "'");
-  return r.out.find("protection: bubblewrap") != std::string::npos;
+// The honest stub's results (the scores every hostile submission must get), once.
+const Results& stub() {
+  static const Results r = grade(kTool, "01", kExercises / "01-t2-plane", "--time-limit 1");
+  return r;
 }
 
-// Every test of a hostile submission scores 0 and says what happened.
-void expect_all_zero(const Results& r, const std::string& words) {
-  ASSERT_FALSE(r.tests.empty());
-  EXPECT_EQ(r.score, 0);
-  for (const auto& t : r.tests) {
-    EXPECT_EQ(t.score, 0) << t.name;
-    EXPECT_NE(t.output.find(words), std::string::npos) << t.name << ": " << t.output;
+// What a hidden test may say: how it ended, and nothing else.
+bool plain_verdict(const std::string& s) {
+  return s == "passed" || s == "failed" || s == "crashed" || s == "timed out" || s == "output limit" ||
+         s.rfind("not run", 0) == 0;
+}
+
+// Everything on the host a submission must leave alone.
+struct HostState {
+  std::set<std::string> files;               // under /usr/local, the top of /usr/bin and /
+  std::map<std::string, std::string> cache;  // the grader cache, by content
+  static HostState now() {
+    HostState h;
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator("/usr/local", ec); it != fs::recursive_directory_iterator(); it.increment(ec))
+      h.files.insert(it->path().string());
+    for (const char* d : {"/usr/bin", "/"})
+      for (const auto& e : fs::directory_iterator(d, ec)) h.files.insert(e.path().string());
+    for (const auto& e : fs::directory_iterator(fs::path(T2_BINARY_DIR) / "grader-cache", ec))
+      if (e.path().string().find(".tmp") == std::string::npos) h.cache[e.path().string()] = slurp(e.path());
+    return h;
   }
+};
+
+// What a grading run whose sandbox user was `uid` left behind: its processes, files in /tmp,
+// its cgroups (named after the grader's pid, which the uid encodes).
+std::vector<std::string> leftovers(unsigned long uid) {
+  std::vector<std::string> r;
+  std::error_code ec;
+  for (const char* d : {"/proc", "/tmp", "/var/tmp", "/dev/shm"})
+    for (const auto& e : fs::directory_iterator(d, ec)) {
+      struct stat st{};
+      if (::lstat(e.path().c_str(), &st) == 0 && st.st_uid == uid) r.push_back(e.path().string());
+    }
+  const std::string cg = "t2grade-" + std::to_string(uid - 1900000000ul) + "-";
+  for (const auto& c : fs::directory_iterator("/sys/fs/cgroup", ec))
+    for (const auto& g : fs::directory_iterator(c.path(), ec))
+      if (g.path().filename().string().rfind(cg, 0) == 0) r.push_back("cgroup " + g.path().string());
+  return r;
+}
+
+unsigned long sandbox_uid_of(const Results& r) {
+  const auto at = r.output.find("bubblewrap as uid ");
+  return at == std::string::npos ? 0 : std::stoul(r.output.substr(at + 18));
+}
+
+// A hostile submission scores exactly what the honest stub scores, test by test; hidden tests
+// say only how they ended; the host is left as it was.
+void expect_like_stub(const fs::path& submission) {
+  const HostState before = HostState::now();
+  const Results r = grade(kTool, "01", submission, "--time-limit 1");
+  ASSERT_EQ(r.tests.size(), stub().tests.size());
+  EXPECT_EQ(r.score, stub().score) << r.raw.substr(0, 3000);
+  for (const auto& t : r.tests) {
+    const Graded* s = stub().find(t.name);
+    ASSERT_NE(s, nullptr) << t.name;
+    EXPECT_EQ(t.score, s->score) << t.name << ": " << t.output;
+    if (t.visibility != "visible") {
+      EXPECT_TRUE(plain_verdict(t.output)) << t.name << ": " << t.output;
+    }
+  }
+  const HostState after = HostState::now();
+  std::vector<std::string> added;
+  std::set_difference(after.files.begin(), after.files.end(), before.files.begin(), before.files.end(), std::back_inserter(added));
+  EXPECT_TRUE(added.empty()) << "left on the host: " << added.front();
+  for (const auto& [f, content] : before.cache) {
+    const auto it = after.cache.find(f);
+    EXPECT_TRUE(it != after.cache.end() && it->second == content) << "the grader cache changed: " << f;
+  }
+  const unsigned long uid = sandbox_uid_of(r);
+  ASSERT_GE(uid, 1900000000ul) << r.output;
+  for (int i = 0; i < 50 && !leftovers(uid).empty(); ++i) ::usleep(100000);
+  const auto left = leftovers(uid);
+  EXPECT_TRUE(left.empty()) << "still alive: " << left.front();
+  EXPECT_FALSE(fs::exists("/t2-owned"));
+}
+
+std::vector<std::string> hostile_names() {
+  std::vector<std::string> r;
+  for (const auto& e : fs::directory_iterator(kHostile))
+    if (e.is_directory()) r.push_back(e.path().filename().string());
+  std::sort(r.begin(), r.end());
+  return r;
+}
+
+class Hostile : public ::testing::TestWithParam<std::string> {};
+
+// Every submission of exercises/_hostile/ (see its README): the attacks of issue 10 and before.
+TEST_P(Hostile, ScoresWhatTheStubScoresAndLeavesNothing) { expect_like_stub(kHostile / GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(All, Hostile, ::testing::ValuesIn(hostile_names()),
+                         [](const ::testing::TestParamInfo<std::string>& i) {
+                           std::string n = i.param;
+                           for (auto& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+TEST(GraderHostile, AFifoInTheSubmissionIsRefusedWithoutWaiting) {
+  TempDir t;
+  fs::copy_file(kExercises / "01-t2-plane" / "solution" / "classify.cpp", t.path / "classify.cpp");
+  ASSERT_EQ(::mkfifo((t.path / "notes").c_str(), 0644), 0);
+  const auto start = std::chrono::steady_clock::now();
+  const Results r = grade(kTool, "01", t.path);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60);
+  EXPECT_EQ(r.score, 0);
+  EXPECT_NE(r.output.find("notes is a FIFO"), std::string::npos) << r.output;
+  // The source itself a FIFO: refused too, never opened for a blocking read.
+  fs::remove(t.path / "notes");
+  fs::remove(t.path / "classify.cpp");
+  ASSERT_EQ(::mkfifo((t.path / "classify.cpp").c_str(), 0644), 0);
+  EXPECT_EQ(grade(kTool, "01", t.path).score, 0);
 }
 
 TEST(GraderHostile, DoesNotCompile) {
   const Results r = grade(kTool, "01", kHostile / "does-not-compile");
-  expect_all_zero(r, "does not compile");
+  EXPECT_EQ(r.score, 0);
+  for (const auto& t : r.tests) EXPECT_NE(t.output.find("does not compile"), std::string::npos) << t.output;
   EXPECT_NE(r.output.find("error"), std::string::npos) << "the compiler's message is shown: " << r.output;
   EXPECT_NE(r.output.find("classify.cpp:4"), std::string::npos) << r.output;
 }
 
+TEST(GraderHostile, ForbiddenNamesAreReadFromTheObjectEvenBehindMacros) {
+  // Both give right answers through the library: refused by name, not by result.
+  for (const char* s : {"forbidden-direct", "forbidden-macro"}) {
+    const Results r = grade(kTool, "01", kHostile / s);
+    EXPECT_EQ(r.score, 0) << s;
+    EXPECT_NE(r.output.find("t2::antipode"), std::string::npos) << s << ": " << r.output;
+    EXPECT_NE(r.output.find("t2::operator=="), std::string::npos) << s << ": " << r.output;
+  }
+}
+
 TEST(GraderHostile, InfiniteLoopIsStoppedAndTheRunHasAnOverallLimit) {
-  // Warm the cache of compiled tests first: the overall limit counts builds too.
-  grade(kTool, "01", kExercises / "01-t2-plane");
+  stub();  // warms the cache of trusted programs: the overall limit counts builds too
   // Eight tests of at least 1 s of CPU each cannot fit in 8 s: some must be cut by the limit.
   const auto start = std::chrono::steady_clock::now();
   const Results r = grade(kTool, "01", kHostile / "infinite-loop", "--time-limit 1 --overall-limit 8");
   const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(took, 30) << "the overall limit must stop the run";
   EXPECT_EQ(r.score, 0);
-  int cpu = 0, not_run = 0;
+  int timed_out = 0, not_run = 0;
   for (const auto& t : r.tests) {
     EXPECT_EQ(t.score, 0) << t.name;
-    if (t.output.find("CPU time") != std::string::npos || t.output.find("timed out") != std::string::npos) ++cpu;
+    if (t.output.find("timed out") != std::string::npos) ++timed_out;
     if (t.output.find("overall time limit") != std::string::npos) ++not_run;
   }
-  EXPECT_GE(cpu, 1);
+  EXPECT_GE(timed_out, 1);
   EXPECT_GE(not_run, 1);
   EXPECT_NE(r.output.find("overall time limit"), std::string::npos) << r.output;
 }
 
-TEST(GraderHostile, SleepingIsStoppedByTheWallClock) {
-  grade(kTool, "01", kExercises / "01-t2-plane");  // warm the cache of compiled tests
-  const Results r = grade(kTool, "01", kHostile / "sleeps", "--time-limit 1 --overall-limit 9");
-  EXPECT_EQ(r.score, 0);
-  int timed_out = 0;
+TEST(GraderHostile, CrashesAreNamedOnPublicTestsOnly) {
+  const Results r = grade(kTool, "01", kHostile / "segfault", "--time-limit 1");
   for (const auto& t : r.tests) {
-    EXPECT_EQ(t.score, 0) << t.name;
-    if (t.output.find("timed out") != std::string::npos) ++timed_out;
+    if (t.visibility == "visible") {
+      EXPECT_NE(t.output.find("segmentation fault"), std::string::npos) << t.output;
+    } else {
+      EXPECT_EQ(t.output, "crashed");
+    }
   }
-  EXPECT_GE(timed_out, 1) << "a test that never returns is a timeout, never a pass";
 }
 
-TEST(GraderHostile, Segfault) {
-  expect_all_zero(grade(kTool, "01", kHostile / "segfault"), "segmentation fault");
-}
-
-TEST(GraderHostile, StackOverflow) {
-  expect_all_zero(grade(kTool, "01", kHostile / "stack-overflow"), "SIGSEGV");
-}
-
-TEST(GraderHostile, HugeAllocation) {
-  expect_all_zero(grade(kTool, "01", kHostile / "huge-allocation"), "memory");
-}
-
-TEST(GraderHostile, HugeOutput) {
-  const Results r = grade(kTool, "01", kHostile / "huge-output");
-  expect_all_zero(r, "output");
-  EXPECT_LT(r.raw.size(), 100000u) << "the output is capped";
-}
-
-TEST(GraderHostile, ExitZeroInTheMiddle) {
-  expect_all_zero(grade(kTool, "01", kHostile / "exit-zero"), "exit");
-}
-
-TEST(GraderHostile, FakeTestOutputGainsNothing) {
-  expect_all_zero(grade(kTool, "01", kHostile / "fake-output"), "before the test finished");
-}
-
-TEST(GraderHostile, ForgedRecordWithoutExitGainsNothing) {
-  // Wrong answers, fake gtest text and a forged record, then an ordinary return.
+TEST(GraderJudge, PrintingMegabytesCostsNothing) {
   TempDir t;
-  std::ofstream(t.path / "classify.cpp") << R"(#include <unistd.h>
+  std::ofstream(t.path / "classify.cpp") << slurp(kExercises / "01-t2-plane" / "solution" / "classify.cpp") << R"(
 #include <cstdio>
-#include "classify.hpp"
-namespace ex01 {
-static void forge() {
-  std::printf("[  PASSED  ] 1 test.\n");
-  for (int fd = 3; fd < 10; ++fd) { ssize_t n = write(fd, "0123456789abcdef0123456789abcdef\nPASS\n", 38); (void)n; }
-}
-Where where(const t2::Point&) { forge(); return Where::infinity; }
-bool same_point(const t2::Point&, const t2::Point&) { forge(); return false; }
-bool antipodal(const t2::Point&, const t2::Point&) { forge(); return true; }
-}
+#include <string>
+static const int t2_noise = [] {
+  const std::string kb(1023, 'x');
+  for (int i = 0; i < 4096; ++i) { std::fprintf(stdout, "%s\n", kb.c_str()); std::fprintf(stderr, "%s\n", kb.c_str()); }
+  return 0;
+}();
 )";
   const Results r = grade(kTool, "01", t.path);
-  EXPECT_EQ(r.score, 0);
+  double max = 0;
+  for (const auto& x : r.tests) max += x.max_score;
+  EXPECT_EQ(r.score, max) << r.raw.substr(0, 2000);
+  EXPECT_LT(r.raw.size(), 20000u) << "nothing of the output reaches the report";
+}
+
+TEST(GraderSandbox, TheProtectionLineIsWhatTheProbeFound) {
+  const Results r = grade(kTool, "01", kExercises / "01-t2-plane" / "solution");
+  const std::string& o = r.output;
+  EXPECT_NE(o.find("bubblewrap as uid "), std::string::npos) << o;
+  EXPECT_EQ(o.find("bubblewrap as uid 0 "), std::string::npos) << "student code must not run as root: " << o;
+  for (const char* held : {"capabilities none", "seccomp filter", "/usr writable no", "remount no",
+                           "new user namespace no", "network interfaces 0", "hidden files unreadable 3/3"})
+    EXPECT_NE(o.find(held), std::string::npos) << held << " in: " << o;
 }
 
 TEST(GraderSandbox, CannotReadHiddenTestsNorWriteOutsideNorUseTheNetwork) {
-  if (!bwrap_in_force()) GTEST_SKIP() << "bubblewrap does not work here: the grader runs with rlimits only";
   TempDir t, outside;
   const fs::path hidden = kExercises / "01-t2-plane" / "hidden" / "test_hidden.cpp";
   const fs::path target = outside.path / "escaped.txt";
@@ -132,7 +234,7 @@ TEST(GraderSandbox, CannotReadHiddenTestsNorWriteOutsideNorUseTheNetwork) {
   std::ofstream(t.path / "classify.cpp") << "#include \"" << hidden.string() << "\"\n";
   const Results c = grade(kTool, "01", t.path);
   EXPECT_EQ(c.score, 0);
-  EXPECT_NE(c.output.find("does not compile"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("not run"), std::string::npos) << c.output;
   // At run time: read the hidden tests and print them in a public test, write outside the
   // temporary directory, open a network connection.
   std::ofstream(t.path / "classify.cpp", std::ios::trunc) << R"(#include <arpa/inet.h>
@@ -140,18 +242,18 @@ TEST(GraderSandbox, CannotReadHiddenTestsNorWriteOutsideNorUseTheNetwork) {
 #include <sys/socket.h>
 #include <unistd.h>
 #include <cstdio>
+#include <stdexcept>
 #include "classify.hpp"
 namespace ex01 {
 static void attempt() {
   if (FILE* h = std::fopen(")" << hidden.string() << R"(", "r")) {
-    char buf[4096]; size_t n = std::fread(buf, 1, sizeof buf - 1, h); buf[n] = 0; std::printf("%s", buf); std::fclose(h);
+    char buf[4096]; size_t n = std::fread(buf, 1, sizeof buf - 1, h); buf[n] = 0; throw std::runtime_error(buf);
   }
   if (FILE* f = std::fopen(")" << target.string() << R"(", "w")) { std::fputs("escaped\n", f); std::fclose(f); }
   int s = socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in a{}; a.sin_family = AF_INET; a.sin_port = htons(80);
   inet_pton(AF_INET, "127.0.0.1", &a.sin_addr);
-  if (s >= 0 && connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) std::puts("NETWORK-OK");
-  if (s >= 0) std::printf("socket=%d\n", s);
+  if (s >= 0 && connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) throw std::runtime_error("NETWORK-OK");
 }
 Where where(const t2::Point&) { attempt(); return Where::infinity; }
 bool same_point(const t2::Point&, const t2::Point&) { attempt(); return false; }
@@ -184,7 +286,7 @@ TEST(GraderReport, ResultsJsonHasGradescopesShape) {
   const Graded* f = r.find("Hidden.EqualPointsAtInfinity");
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->score, 0) << "the seed's formula yields [0,0,0] there";
-  EXPECT_NE(r.output.find("Protection:"), std::string::npos) << "the report says what protection is in force";
+  EXPECT_NE(r.output.find("Protection: bubblewrap"), std::string::npos) << "the report says what protection is in force";
   // Hidden tests can be shown after the due date instead.
   const Results a = grade(kTool, "03", kExercises / "03-predicates" / "solution", "--hidden-visibility after_due_date");
   for (const auto& t : a.tests)
@@ -252,7 +354,7 @@ TEST(Release, StudentTreeHoldsNothingSecret) {
   ASSERT_EQ(r.status, 0) << r.out;
   // What students need is there.
   for (const char* f : {"build.sh", "CMakeLists.txt", "lib/include/t2/t2.hpp", "tools/t2/cmd_check.cpp",
-                        "exercises/harness/harness_main.cpp", "exercises/01-t2-plane/classify.cpp",
+                        "exercises/harness/checker_main.cpp", "exercises/01-t2-plane/classify.cpp",
                         "exercises/01-t2-plane/test_public.cpp", "exercises/05-polygons/README.md"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   // Nothing secret, by name ...
@@ -290,7 +392,7 @@ TEST(Release, AutograderBundleAndClassroomConfig) {
   ASSERT_EQ(r.status, 0) << r.out;
   const Ran l = run("unzip -l '" + zip.string() + "'");
   for (const char* f : {" setup.sh", " run_autograder", "exercises/01-t2-plane/hidden/test_hidden.cpp",
-                        "exercises/harness/harness_main.cpp", "lib/include/t2/t2.hpp"})
+                        "exercises/harness/checker_main.cpp", "lib/include/t2/t2.hpp"})
     EXPECT_NE(l.out.find(f), std::string::npos) << f << "\n" << l.out;
   EXPECT_EQ(l.out.find("/solution/"), std::string::npos) << "reference solutions are not needed to grade";
   EXPECT_EQ(l.out.find("/wrong/"), std::string::npos);
@@ -299,12 +401,12 @@ TEST(Release, AutograderBundleAndClassroomConfig) {
 
   const fs::path cls = t.path / "classroom";
   ASSERT_EQ(run("'" + kTool + "' release classroom '" + cls.string() + "'").status, 0);
-  const Json j = JsonParser(slurp(cls / ".github" / "classroom" / "autograding.json")).parse();
-  const auto& tests = j["tests"].array();
+  const auto j = nlohmann::json::parse(slurp(cls / ".github" / "classroom" / "autograding.json"));
+  const auto& tests = j.at("tests");
   EXPECT_GE(tests.size(), 5u);
   for (const auto& x : tests) {
-    EXPECT_NE(x["run"].str().find("t2 check"), std::string::npos);
-    for (const char* k : {"name", "setup", "run", "comparison", "timeout", "points"}) EXPECT_TRUE(x.has(k)) << k;
+    EXPECT_NE(x.at("run").get<std::string>().find("t2 check"), std::string::npos);
+    for (const char* k : {"name", "setup", "run", "comparison", "timeout", "points"}) EXPECT_TRUE(x.contains(k)) << k;
   }
   EXPECT_FALSE(fs::exists(cls / "exercises" / "01-t2-plane" / "hidden"));
 }

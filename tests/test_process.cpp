@@ -2,6 +2,7 @@
 // that kills a whole process group, bounded output that never blocks the child, stdin, env, cwd,
 // resource limits and run_all's order and parallelism.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -194,6 +195,23 @@ TEST(Process, KeptFdsAreInheritedOthersClosed) {
   EXPECT_EQ(::read(q[0], buf, sizeof buf), 0) << "an fd that was not kept reached the child";
   ::close(p[0]);
   ::close(q[0]);
+}
+
+TEST(Process, TwoChildrenTalkThroughPipesAndSeeEachOthersEnd) {
+  // a → b through one pipe; the caller hands both ends over, so b sees EOF when a ends.
+  int p[2];
+  ASSERT_EQ(::pipe2(p, O_CLOEXEC), 0);
+  Spec a = sh("echo hello >&" + std::to_string(p[1]));
+  a.keep_fds = a.close_in_parent = {p[1]};
+  Spec b = sh("cat <&" + std::to_string(p[0]));
+  b.keep_fds = b.close_in_parent = {p[0]};
+  b.limits.wall_seconds = 20;
+  const auto rs = t2proc::run_all({a, b}, 2);
+  EXPECT_TRUE(rs[0].ok());
+  EXPECT_TRUE(rs[1].ok()) << "b waited for an EOF that never came";
+  EXPECT_FALSE(rs[1].timed_out);
+  EXPECT_EQ(rs[1].out, "hello\n");
+  EXPECT_EQ(::fcntl(p[0], F_GETFD), -1) << "handed-over fds are closed in the caller";
 }
 
 TEST(Process, ResourceLimits) {

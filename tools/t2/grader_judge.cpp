@@ -114,9 +114,12 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
     if (dr.timed_out || dr.signal == SIGXCPU || (cr.timed_out && !dr.ok())) {
       t.what = "timed out";
       if (!t.hidden) t.detail = fmt::format("still running after {:.0f} s (an infinite loop, or waiting for input?)", wall);
-    } else if (dr.signal != 0) {
+    } else if (dr.signal != 0 || dr.exit_code > 128) {
+      // Through bubblewrap a crash shows as the exit status 128 + signal (an exit(129..192) looks the same).
       t.what = "crashed";
-      if (!t.hidden) t.detail = "your code " + signal_words(dr.signal);
+      if (!t.hidden)
+        t.detail = dr.signal ? "your code " + signal_words(dr.signal)
+                             : fmt::format("your code {} (exit status {})", signal_words(dr.exit_code - 128), dr.exit_code);
     } else {
       t.what = "failed";
       if (!t.hidden)

@@ -108,6 +108,8 @@ class Cgroup {
       for (int i = 0; i < 100 && rmdir(d.c_str()) != 0 && errno == EBUSY; ++i) usleep(10000);
     }
   }
+  /// The limits that were set, in words.
+  std::string summary() const { return said_; }
   /// The cgroup.procs files to write the child's pid into.
   std::vector<std::string> procs() const {
     std::vector<std::string> r;
@@ -117,12 +119,14 @@ class Cgroup {
 
  private:
   std::vector<fs::path> dirs_;
+  std::string said_;
   void add(const fs::path& d, const std::vector<std::pair<std::string, std::string>>& settings) {
     std::error_code ec;
     const bool fresh = fs::create_directory(d, ec) && !ec;
     if (!fresh && std::find(dirs_.begin(), dirs_.end(), d) == dirs_.end()) return;
     if (fresh) dirs_.push_back(d);
-    for (const auto& [file, value] : settings) write_text(d / file, value);
+    for (const auto& [file, value] : settings)
+      if (write_text(d / file, value)) said_ += (said_.empty() ? "" : ", ") + file + " " + value;
   }
 };
 
@@ -182,7 +186,7 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   s.keep_fds = r.handover_fds;
   s.keep_fds.push_back(sfd);
   s.close_in_parent = s.keep_fds;
-  return {std::move(s), cg};
+  return {std::move(s), cg, cg ? cg->summary() : std::string()};
 }
 
 t2proc::Result run_sandboxed(const SandboxRun& r) {
@@ -203,7 +207,8 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   r.limits.wall_seconds = 30;
   r.limits.output_bytes = 8192;
   r.tree_memory_bytes = 256u << 20;
-  const t2proc::Result res = run_sandboxed(r);
+  const Prepared prepared = prepare_sandboxed(r);
+  const t2proc::Result res = t2proc::run(prepared.spec);
   s.probe_output = res.out;
   std::map<std::string, std::string> f;
   std::istringstream in(res.out);
@@ -223,6 +228,8 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
         "namespace {}, network interfaces {}, hidden files unreadable {}, /tmp tmpfs {} MB, process limit {}",
         s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
         f["network_interfaces"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
+    s.description += prepared.tree_limits.empty() ? "; no cgroup (per-process limits only)"
+                                                  : "; cgroup for the whole tree: " + prepared.tree_limits;
     if (!s.works) s.description = "UNSAFE sandbox, student code is not run: " + s.description;
   }
   done = std::make_unique<Sandbox>(s);

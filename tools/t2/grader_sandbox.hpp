@@ -40,6 +40,7 @@ struct SandboxRun {
 struct Prepared {
   t2proc::Spec spec;           ///< the command line of setpriv / bwrap / the command
   std::shared_ptr<void> hold;  ///< the run's cgroup (removed when the last copy goes)
+  std::string tree_limits;     ///< the cgroup limits in force ("" when there is no cgroup)
 };
 
 /// What protects the machine while student code runs, as probed.

@@ -1,0 +1,1 @@
+../../01-t2-plane/solution/classify.cpp
