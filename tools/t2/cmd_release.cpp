@@ -3,9 +3,11 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "command.hpp"
@@ -114,7 +116,8 @@ int autograder(const fs::path& zip, const std::optional<std::string>& exercise) 
       "export DEBIAN_FRONTEND=noninteractive\n"
       "apt-get update -qq\n"
       "apt-get install -y -qq --no-install-recommends cmake g++ make pkg-config libgtest-dev libgmock-dev \\\n"
-      "  libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev doxygen bubblewrap\n"
+      "  libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev doxygen bubblewrap \\\n"
+      "  libseccomp-dev nlohmann-json3-dev libcli11-dev util-linux\n"
       "cmake -S . -B build/default -DCMAKE_BUILD_TYPE=RelWithDebInfo\n"
       "cmake --build build/default -j2 --target t2_tool\n");
   t2::write_file_atomically(stage / "run_autograder",
@@ -144,39 +147,38 @@ int autograder(const fs::path& zip, const std::optional<std::string>& exercise) 
   return t2cli::kOk;
 }
 
-int run(t2cli::Args args) {
+struct Options {
+  std::string kind, out;
   std::optional<std::string> exercise;
-  std::vector<std::string> pos;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--exercise") {
-      if (i + 1 >= args.size()) throw t2cli::UsageError("--exercise needs a value");
-      exercise = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      throw t2cli::UsageError("unknown option " + args[i]);
-    } else {
-      pos.push_back(args[i]);
-    }
-  }
-  if (pos.size() != 2) throw t2cli::UsageError("expected: t2 release student|autograder|classroom OUT");
-  if (pos[0] == "student") return student(pos[1]);
-  if (pos[0] == "classroom") return classroom(pos[1]);
-  if (pos[0] == "autograder") return autograder(pos[1], exercise);
-  throw t2cli::UsageError("unknown release kind '" + pos[0] + "' (student, autograder or classroom)");
+};
+
+int release(const Options& o) {
+  if (o.kind == "student") return student(o.out);
+  if (o.kind == "classroom") return classroom(o.out);
+  return autograder(o.out, o.exercise);
+}
+
+t2cli::Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "student: the course for students (chapters, library, figures, exercise stubs and\n"
+      "  public tests), without reference solutions, hidden tests or wrong solutions. It\n"
+      "  builds with ./build.sh and has `t2 check`. The release is refused (and removed)\n"
+      "  if any line of secret exercise content is found anywhere in it.\n"
+      "autograder: a Gradescope bundle (setup.sh, run_autograder, the sources with the\n"
+      "  hidden tests) that grades with `t2 grade`, the sandboxed judge. Without --exercise\n"
+      "  it grades the exercise whose file the submission holds.\n"
+      "classroom: the student tree plus a GitHub Classroom autograding configuration\n"
+      "  (.github/classroom/autograding.json) that runs the public tests.");
+  app.add_option("KIND", o->kind, "student, autograder or classroom")
+      ->required()
+      ->check(CLI::IsMember({"student", "autograder", "classroom"}));
+  app.add_option("OUT", o->out, "the folder (or OUT.zip for autograder) to write")->required();
+  app.add_option("--exercise", o->exercise, "autograder: the one exercise it grades")->type_name("NN");
+  app.footer("Exit status: 0 written; 2 bad usage, an existing OUT, or secret content found.");
+  return [o] { return release(*o); };
 }
 
 }  // namespace
 
-T2_COMMAND({"release", "write the student tree, a Gradescope autograder or a Classroom template",
-            "Usage: t2 release student OUT\n"
-            "       t2 release autograder OUT.zip [--exercise NN]\n"
-            "       t2 release classroom OUT\n\n"
-            "student: the course for students (chapters, library, figures, exercise stubs and\n"
-            "  public tests), without reference solutions, hidden tests or wrong solutions. It\n"
-            "  builds with ./build.sh and has `t2 check`. The release is refused (and removed)\n"
-            "  if any line of secret exercise content is found anywhere in it.\n"
-            "autograder: a Gradescope bundle (setup.sh, run_autograder, the sources with the\n"
-            "  hidden tests). Without --exercise it grades the exercise whose file the\n"
-            "  submission holds.\n"
-            "classroom: the student tree plus a GitHub Classroom autograding configuration\n"
-            "  (.github/classroom/autograding.json) that runs the public tests.\n",
-            run})
+T2_COMMAND({"release", "write the student tree, a Gradescope autograder or a Classroom template", setup});
