@@ -16,13 +16,10 @@ namespace {
 using testing::scale;
 
 using testing::make;
+using testing::pos;
 using testing::q;
+using testing::sq;
 
-/// The drawn (Cartesian) position of a proper point, exactly.
-template <class P>
-std::pair<Rational, Rational> pos(const P& p) {
-  return {q(p.x()) / q(p.w()), q(p.y()) / q(p.w())};
-}
 template <class P>
 int side(const P& p) {
   return sgn(q(p.w()));
@@ -30,11 +27,6 @@ int side(const P& p) {
 
 ExactPoint to_exact_any(const ExactPoint& p) { return p; }
 ExactPoint to_exact_any(const Point& p) { return to_exact(p); }
-
-Rational sq(const std::pair<Rational, Rational>& a, const std::pair<Rational, Rational>& b) {
-  const Rational dx = a.first - b.first, dy = a.second - b.second;
-  return dx * dx + dy * dy;
-}
 
 /// Oracle for proper a, b, c, written from the picture: a point on c's side is at its Euclidean
 /// distance; a point on the other side is beyond infinity, and among those the one drawn farther

@@ -4,6 +4,8 @@
 // made a point of T², must also satisfy the §4.3.1 distances of distance.hpp.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -17,6 +19,7 @@ namespace {
 using testing::scale;
 
 using testing::make;
+using testing::orient_oracle;
 using testing::q;
 
 struct Pos {
@@ -34,14 +37,6 @@ Pos circumcentre(const Pos& a, const Pos& b, const Pos& c) {
   const Rational la = a.x * a.x + a.y * a.y, lb = b.x * b.x + b.y * b.y, lc = c.x * c.x + c.y * c.y;
   return {(la * (b.y - c.y) + lb * (c.y - a.y) + lc * (a.y - b.y)) / den,
           (la * (c.x - b.x) + lb * (a.x - c.x) + lc * (b.x - a.x)) / den};
-}
-
-template <class P>
-Sign orient_oracle(const P& a, const P& b, const P& c) {
-  const Rational m[3][3] = {{q(a.w()), q(a.x()), q(a.y())}, {q(b.w()), q(b.x()), q(b.y())}, {q(c.w()), q(c.x()), q(c.y())}};
-  const Rational d = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  return static_cast<Sign>(sgn(d));
 }
 
 /// The definition, with rationals only.
@@ -174,6 +169,66 @@ TEST(InCircle, RandomDoublesMatchOracle) {
     const Point a(1, 1, 0), b(1, 0, 1), c(1, -1, 0), d(1, x, y);
     ASSERT_EQ(in_circle(a, b, c, d), in_circle_oracle(a, b, c, d));
   }
+}
+
+/// Four points rounded onto one circle (centre and radius random), d nudged by up to `ulps`
+/// units in the last place, all scaled exactly by 2^e; with weight w (an exact power of two).
+std::array<Point, 4> near_circle(std::mt19937_64& rng, int e, int ulps, double w = 1) {
+  std::uniform_real_distribution<double> u(-1, 1), t(0, 6.283185307179586);
+  std::uniform_int_distribution<int> k(-ulps, ulps);
+  const double cx = u(rng), cy = u(rng), rad = 0.1 + std::fabs(u(rng));
+  std::array<Point, 4> p{Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0)};
+  for (int i = 0; i < 4; ++i) {
+    const double a = t(rng);
+    double x = cx + rad * std::cos(a), y = cy + rad * std::sin(a);
+    if (i == 3)
+      for (int j = k(rng); j != 0; j += (j > 0 ? -1 : 1)) y = std::nextafter(y, j > 0 ? 9.0 : -9.0);
+    p[i] = Point(w, w * std::ldexp(x, e), w * std::ldexp(y, e));
+  }
+  return p;
+}
+
+TEST(InCircle, NearlyCocircularMatchesOracleAtEveryScale) {
+  // Every stage of incircle_double.hpp: fast path, unrounded differences, full expansions, and
+  // the dyadic fallback; Cartesian (w = 1) and homogeneous (w = 2^k) input.
+  std::mt19937_64 rng(21);
+  for (double w : {1.0, 0.25, 8.0}) {
+    for (int e : {0, 60, -60, 200, -200, 215, -209, 249, 260, -260, 500, -500, 950, -1000}) {
+      for (int i = 0; i < 40 * scale(); ++i) {
+        const auto [a, b, c, d] = near_circle(rng, e, 2, w);
+        if (orient_oracle(a, b, c) == ZERO) {
+          ASSERT_THROW(in_circle(a, b, c, d), Undefined);
+          continue;
+        }
+        const Sign want = in_circle_oracle(a, b, c, d);
+        ASSERT_EQ(in_circle(a, b, c, d), want) << w << " " << e;
+        ASSERT_EQ(in_circle(b, a, c, d), -want);
+        if (w == 1 && std::abs(e) <= 200) {
+          ASSERT_EQ(in_circle(to_exact(a), to_exact(b), to_exact(c), to_exact(d)), want);
+        }
+      }
+    }
+  }
+}
+
+TEST(InCircle, NearlyCollinearTrianglesThrowExactlyWhenCollinear) {
+  // a, b, c rounded onto a line: the fast path cannot certify their orientation, the exact
+  // orient decides whether there is a circle.
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> u(-1, 1), t(0, 1);
+  int thrown = 0;
+  for (int i = 0; i < 2000 * scale(); ++i) {
+    const double px = u(rng), py = u(rng), qx = i % 3 ? u(rng) : px + 0.5, qy = i % 3 ? u(rng) : py + 0.25;
+    const double s = i % 3 ? t(rng) : 2.0;
+    const Point a(1, px, py), b(1, qx, qy), c(1, px + s * (qx - px), py + s * (qy - py)), d(1, u(rng), u(rng));
+    if (orient_oracle(a, b, c) == ZERO) {
+      ++thrown;
+      ASSERT_THROW(in_circle(a, b, c, d), Undefined);
+    } else {
+      ASSERT_EQ(in_circle(a, b, c, d), in_circle_oracle(a, b, c, d));
+    }
+  }
+  EXPECT_GT(thrown, 0);
 }
 
 }  // namespace

@@ -68,19 +68,46 @@ struct Filtered {
 };
 
 /// How often the exact stage ran: counters for the benchmarks and the course's measurements.
+/// They count only in programs built with `T2_FILTER_STATS` defined (see `count_call`).
 struct FilterStats {
   std::uint64_t calls = 0;  ///< predicates evaluated on doubles
-  std::uint64_t exact = 0;  ///< of which the filter could not decide and GMP did
+  std::uint64_t exact = 0;  ///< of which the fast path could not decide and an exact stage ran
   /// Sets both counters to zero.
   void reset() { calls = exact = 0; }
 };
 
-/// The counters of `filtered_sign` in the calling thread (per thread, so counting costs no
-/// atomic operation).
+/// The counters of the predicates in the calling thread (per thread, so counting costs no
+/// atomic operation). They stay zero unless `filter_stats_enabled`.
 inline FilterStats& filter_stats() {
   thread_local FilterStats stats;
   return stats;
 }
+
+//> filter-stats
+/// True when this translation unit counts (built with the compile definition T2_FILTER_STATS).
+///
+/// The counting code is in headers only (the compiled part of the library calls no predicate),
+/// so a definition on one target is enough: `target_compile_definitions(prog PRIVATE
+/// T2_FILTER_STATS)`, or the CMake option `T2_FILTER_STATS` for every target of the build.
+/// Define it for a whole program or not at all: two translation units of one program that
+/// disagree would hold two different definitions of the same inline predicate.
+#ifdef T2_FILTER_STATS
+inline constexpr bool filter_stats_enabled = true;
+#else
+inline constexpr bool filter_stats_enabled = false;
+#endif
+
+namespace detail {
+/// Counts one predicate call (compiled out without T2_FILTER_STATS).
+inline void count_call() {
+  if constexpr (filter_stats_enabled) ++filter_stats().calls;
+}
+/// Counts one call that needed an exact stage (compiled out without T2_FILTER_STATS).
+inline void count_exact() {
+  if constexpr (filter_stats_enabled) ++filter_stats().exact;
+}
+}  // namespace detail
+//< filter-stats
 
 namespace detail {
 /// True when x is 0 or 2⁻¹²⁰ ≤ |x| ≤ 2¹²⁰ (see the file comment).
@@ -151,13 +178,12 @@ inline Sign sign_of(const Dyadic& d) { return static_cast<Sign>(sgn(d.m)); }
 /// The exact sign of `f(args...)` for finite doubles (see the file comment).
 template <class F, class... D>
 Sign filtered_sign(F&& f, D... args) {
-  auto& stats = filter_stats();
-  ++stats.calls;
+  detail::count_call();
   const Filtered r = f(Filtered(args)...);
   const int s = certified_sign(r, (detail::in_filter_range(args) && ...));
   if (s != 2) return static_cast<Sign>(s);
   if ((detail::small_integer(args) && ...) && r.mag < 0x1p52) return sign_of(r.v);  // no rounding
-  ++stats.exact;
+  detail::count_exact();
   return sign_of(f(Dyadic(args)...));
 }
 

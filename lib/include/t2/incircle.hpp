@@ -34,8 +34,13 @@
 /// mirrored).
 //< incircle-definition
 
+#include <algorithm>
+
 #include "t2/error.hpp"
+#include <type_traits>
+
 #include "t2/filter.hpp"
+#include "t2/incircle_double.hpp"
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/sign.hpp"
@@ -44,18 +49,39 @@ namespace t2 {
 
 namespace detail {
 
+/// The error for three collinear points, which span no circle.
+inline Undefined collinear_circle() {
+  return Undefined("in_circle(a, b, c, d) is undefined when a, b, c are collinear: they span no circle");
+}
+
 /// The lifted 4×4 determinant with rows [x w, y w, x² + y², w²] (Laplace along two rows).
 template <class N>
 N lifted_det4(const N& aw, const N& ax, const N& ay, const N& bw, const N& bx, const N& by, const N& cw,
               const N& cx, const N& cy, const N& dw, const N& dx, const N& dy) {
-  const N r[4][4] = {{ax * aw, ay * aw, ax * ax + ay * ay, aw * aw},
-                     {bx * bw, by * bw, bx * bx + by * by, bw * bw},
-                     {cx * cw, cy * cw, cx * cx + cy * cy, cw * cw},
-                     {dx * dw, dy * dw, dx * dx + dy * dy, dw * dw}};
-  auto top = [&](int j, int k) { return r[0][j] * r[1][k] - r[0][k] * r[1][j]; };
-  auto bot = [&](int j, int k) { return r[2][j] * r[3][k] - r[2][k] * r[3][j]; };
-  return top(0, 1) * bot(2, 3) - top(0, 2) * bot(1, 3) + top(0, 3) * bot(1, 2) + top(1, 2) * bot(0, 3) -
-         top(1, 3) * bot(0, 2) + top(2, 3) * bot(0, 1);
+  return lifted_det4_any(aw, ax, ay, bw, bx, by, cw, cx, cy, dw, dx, dy);
+}
+
+/// The sign of the lifted determinant for points on one side: fast path and exact stages on
+/// doubles (incircle_double.hpp); integers take it when they fit in 52 bits, GMP otherwise.
+template <class T>
+Sign lifted_sign(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
+  if constexpr (std::is_same_v<T, double>) {
+    return incircle3(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
+  } else {
+    const T* v[12] = {&a.w(), &a.x(), &a.y(), &b.w(), &b.x(), &b.y(), &c.w(), &c.x(), &c.y(), &d.w(), &d.x(), &d.y()};
+    if (std::all_of(v, v + 12, [](const T* x) { return fits_filter(*x); })) {
+      double f[12];
+      for (int i = 0; i < 12; ++i) f[i] = v[i]->get_d();
+      if (f[0] == 1 && f[3] == 1 && f[6] == 1 && f[9] == 1) {
+        const InCircleFast r = incircle2_fast(f[1], f[2], f[4], f[5], f[7], f[8], f[10], f[11]);
+        return r.incircle != 2 ? static_cast<Sign>(r.incircle)
+                               : incircle2_exact(f[1], f[2], f[4], f[5], f[7], f[8], f[10], f[11]);
+      }
+      return incircle3(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]);
+    }
+    return exact_sign([](const auto&... x) { return lifted_det4(x...); }, a.w(), a.x(), a.y(), b.w(), b.x(), b.y(),
+                      c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
+  }
 }
 
 }  // namespace detail
@@ -66,19 +92,25 @@ N lifted_det4(const N& aw, const N& ax, const N& ay, const N& bw, const N& bx, c
 /// not proper points of one side, or are collinear. Exact for every finite input.
 template <class T>
 Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (a.w() == 1 && b.w() == 1 && c.w() == 1 && d.w() == 1) {  // front Cartesian points: sigma = +1
+      const auto f = detail::incircle2_fast(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
+      if (f.orient == 2 && orient(a, b, c) == ZERO) throw detail::collinear_circle();
+      return f.incircle != 2 ? static_cast<Sign>(f.incircle)
+                             : detail::incircle2_exact(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
+    }
+  }
   const Sign sigma = sign_of(a.w());
   if (sigma == ZERO || sign_of(b.w()) != sigma || sign_of(c.w()) != sigma)
     throw Undefined(
         "in_circle(a, b, c, d) is undefined unless a, b, c are proper points on one side: no circle of T2 "
         "passes through points on both sides or on Omega");
   const Sign o = orient(a, b, c);
-  if (o == ZERO) throw Undefined("in_circle(a, b, c, d) is undefined when a, b, c are collinear: they span no circle");
+  if (o == ZERO) throw detail::collinear_circle();
   if (sign_of(d.w()) != sigma) return -o;  // beyond infinity or at infinity: outside the disk
-  const Sign h = sign_of_poly([](const auto&... v) { return detail::lifted_det4(v...); }, a.w(), a.x(), a.y(), b.w(),
-                              b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
-  // h is the Euclidean in-circle sign of the drawn positions: (their turn) * (inside ? 1 : -1),
-  // and their turn is sigma * orient(a, b, c).
-  return sigma * h;
+  // The lifted sign is the Euclidean in-circle sign of the drawn positions: (their turn) *
+  // (inside ? 1 : -1), and their turn is sigma * orient(a, b, c).
+  return sigma * detail::lifted_sign(a, b, c, d);
 }
 
 /// The unoriented test (seed 002's "side of circle", with the sign of CGAL's

@@ -2,7 +2,10 @@
 /// @file orient.hpp
 /// @brief Δ(p, q, r): the orientation of three points of T² (seed 000, §4.3.4).
 
+#include <type_traits>
+
 #include "t2/filter.hpp"
+#include "t2/orient_double.hpp"
 #include "t2/point.hpp"
 
 namespace t2 {
@@ -14,14 +17,38 @@ N det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, c
   return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
 }
 
+namespace detail {
+
+/// Δ of three homogeneous triples of doubles: the Cartesian formulas when every w is 1 (three
+/// comparisons), the homogeneous ones otherwise (orient_double.hpp).
+inline Sign orient_double(double a, double b, double c, double d, double e, double f, double g, double h,
+                          double i) {
+  if (a == 1 && d == 1 && g == 1) return orient2(b, c, e, f, h, i);
+  return orient3(a, b, c, d, e, f, g, h, i);
+}
+
+}  // namespace detail
+
 /// Δ(p, q, r) = sign of the determinant of the three homogeneous triples.
 /// POSITIVE when p lies on the positive (left) side of the oriented line q∨r — for three front
 /// points this is the usual counter-clockwise turn; ZERO when the three are collinear (which
-/// includes p = ±q). Exact for every finite input.
+/// includes p = ±q). Exact for every finite input: on `double` coordinates a fast path with a
+/// proven error bound and exact expansion stages (orient_double.hpp); on `Integer` coordinates
+/// the same when every coordinate fits in 52 bits (the conversion to double is exact), GMP
+/// otherwise.
 template <class T>
 Sign orient(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>& r) {
-  return sign_of_poly([](const auto&... c) { return det3(c...); }, p.w(), p.x(), p.y(), q.w(),
-                      q.x(), q.y(), r.w(), r.x(), r.y());
+  if constexpr (std::is_same_v<T, double>) {
+    return detail::orient_double(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y());
+  } else {
+    if (detail::fits_filter(p.w()) && detail::fits_filter(p.x()) && detail::fits_filter(p.y()) &&
+        detail::fits_filter(q.w()) && detail::fits_filter(q.x()) && detail::fits_filter(q.y()) &&
+        detail::fits_filter(r.w()) && detail::fits_filter(r.x()) && detail::fits_filter(r.y()))
+      return detail::orient_double(p.w().get_d(), p.x().get_d(), p.y().get_d(), q.w().get_d(), q.x().get_d(),
+                                   q.y().get_d(), r.w().get_d(), r.x().get_d(), r.y().get_d());
+    return exact_sign([](const auto&... c) { return det3(c...); }, p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(),
+                      r.x(), r.y());
+  }
 }
 
 /// True when p, q, r lie on a common line of T².

@@ -1,0 +1,175 @@
+#pragma once
+/// @file incircle_double.hpp
+/// @brief The lifted in-circle determinant on `double` coordinates: fast path with a
+/// semi-static error bound, exact stages of floating-point expansions, GMP outside their range.
+/// Notation and method as in orient_double.hpp (u = 2⁻⁵³, γ_k = k·u/(1 − k·u), a monomial that
+/// meets k roundings errs by at most γ_k times its magnitude).
+///
+/// **Cartesian points (every w = 1).** The lifted 4×4 determinant with rows [x, y, x² + y², 1]
+/// does not change when every point is translated by −d (its third column changes by a
+/// combination of the others), so it equals the 3×3 determinant
+///
+///     H = α·m₁ + β·m₂ + γ·m₃,  m₁ = b̂ₓĉ_y − ĉₓb̂_y,  m₂ = ĉₓâ_y − âₓĉ_y,  m₃ = âₓb̂_y − b̂ₓâ_y,
+///
+/// with â = a − d, b̂ = b − d, ĉ = c − d and α = âₓ² + â_y², β, γ the same for b̂, ĉ (Shewchuk's
+/// form). Computed left to right, each monomial (e.g. âₓ²·b̂ₓ·ĉ_y) meets 11 roundings: 2 from
+/// the rounded âₓ, 1 square, 1 sum in α, 2 differences b̂ₓ, ĉ_y, 1 product, 1 minor subtraction,
+/// 1 product by α, at most 2 outer sums. With M_x, M_y the largest |differences| along x and y
+/// (computed: mₓ, m_y; exact ones are at most m/(1 − u)) and M = max(M_x, M_y), the sum of
+/// the magnitudes of the monomials is at most 3·(2M²)·(2M_xM_y), so |fl(H) − H| ≤ 12γ₁₁·M²M_xM_y
+/// ≤ 12γ₁₁/(1 − u)⁴ · m²mₓm_y. The bound fl(fl(fl(C·lo)·hi)·fl(hi·hi)), lo = min(mₓ, m_y), hi =
+/// max(mₓ, m_y) = m, is at least C(1 − u)⁴·lo·hi³; C = 132u(1 + 2⁻⁴⁰) makes it exceed the error.
+///
+/// The same minors give the orientation of a, b, c for free: Δ(a, b, c) = m₁ + m₂ + m₃ (Δ is
+/// invariant under translation too). Each of its six monomials meets 6 roundings and is at most
+/// M_xM_y, so |fl(Δ) − Δ| ≤ 6γ₆/(1 − u)²·mₓm_y, below fl(fl(C_o·mₓ)·m_y) with C_o = 36u(1 +
+/// 2⁻⁴⁰). `in_circle` must throw for collinear a, b, c: this certifies Δ ≠ 0 without calling
+/// `orient`.
+///
+/// Both bounds are trusted only when 2⁻²⁰⁰ ≤ lo and hi ≤ 2²⁰⁰: then nothing overflows, and an
+/// operation that underflows errs by 2⁻¹⁰⁷⁵ at most, which the later factors multiply by at
+/// most 2·hi² — at most 2⁻⁶⁷³ relative to lo·hi³, far below the margin 2⁻⁴⁰·C.
+///
+/// **Homogeneous points.** Rows [x w, y w, x² + y², w²], Laplace expansion along the first two
+/// rows (six products of 2×2 minors). A monomial takes one entry from each column: 5 roundings
+/// inside the entries (two for x² + y²), 2 in the upper minor, 2 in the lower one, 1 in their
+/// product, at most 5 outer sums: 15. With m_w, mₓ, m_y the largest |w|, |x|, |y| of the four
+/// points, the 24 terms of the determinant are each at most (mₓm_w)(m_ym_w)(mₓ² + m_y²)(m_w²), so
+/// the error is at most 24γ₁₅·m_w⁴mₓm_y(mₓ² + m_y²); the code's bound, C_h = 360u(1 + 2⁻⁴⁰)
+/// times that product evaluated with 8 roundings, exceeds it (C_h(1 − u)⁸ ≥ 360u/(1 − 15u)). It
+/// is trusted when m_w, mₓ, m_y ∈ [2⁻¹⁰⁰, 2¹⁰⁰]: an underflow's 2⁻¹⁰⁷⁵ is then at most 2⁻²⁷⁵
+/// relative to the bound.
+///
+/// **Exact stages.** Expansions (expansion.hpp): for Cartesian input, first with the rounded
+/// differences when two-diff shows that none was rounded (then that is H), else with the exact
+/// two-component differences; nonzero |coordinates| must lie in [2⁻²¹⁰, 2²⁵⁰] (degree 4). For
+/// homogeneous input the degree is 8 and the range [2⁻⁸⁰, 2¹²⁰]. Outside, dyadic GMP numbers.
+
+#include <algorithm>
+#include <cmath>
+
+#include "t2/expansion.hpp"
+#include "t2/filter.hpp"
+#include "t2/orient_double.hpp"
+#include "t2/sign.hpp"
+
+namespace t2::detail {
+
+/// C of the file comment: 132u(1 + 2⁻⁴⁰).
+inline constexpr double kInCircle2Bound = 132 * kUnitRoundoff * (1 + 0x1p-40);
+/// C_o of the file comment: 36u(1 + 2⁻⁴⁰).
+inline constexpr double kInCircleOrientBound = 36 * kUnitRoundoff * (1 + 0x1p-40);
+/// C_h of the file comment: 360u(1 + 2⁻⁴⁰).
+inline constexpr double kInCircle3Bound = 360 * kUnitRoundoff * (1 + 0x1p-40);
+
+/// The lifted 4×4 determinant with rows [x w, y w, x² + y², w²] (Laplace along two rows), on any
+/// number type whose operators may return other types (expansions grow with each operation).
+template <class N>
+auto lifted_det4_any(const N& aw, const N& ax, const N& ay, const N& bw, const N& bx, const N& by, const N& cw,
+                     const N& cx, const N& cy, const N& dw, const N& dx, const N& dy) {
+  const auto r00 = ax * aw, r01 = ay * aw, r02 = ax * ax + ay * ay, r03 = aw * aw;
+  const auto r10 = bx * bw, r11 = by * bw, r12 = bx * bx + by * by, r13 = bw * bw;
+  const auto r20 = cx * cw, r21 = cy * cw, r22 = cx * cx + cy * cy, r23 = cw * cw;
+  const auto r30 = dx * dw, r31 = dy * dw, r32 = dx * dx + dy * dy, r33 = dw * dw;
+  return ((((((r00 * r11 - r01 * r10) * (r22 * r33 - r23 * r32)) - ((r00 * r12 - r02 * r10) * (r21 * r33 - r23 * r31))) +
+            ((r00 * r13 - r03 * r10) * (r21 * r32 - r22 * r31))) +
+           ((r01 * r12 - r02 * r11) * (r20 * r33 - r23 * r30))) -
+          ((r01 * r13 - r03 * r11) * (r20 * r32 - r22 * r30))) +
+         ((r02 * r13 - r03 * r12) * (r20 * r31 - r21 * r30));
+}
+
+/// The Cartesian H of the file comment on any number type (differences already taken).
+template <class N>
+auto incircle2_any(const N& adx, const N& ady, const N& bdx, const N& bdy, const N& cdx, const N& cdy) {
+  return ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)) +
+         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+}
+
+/// The exact sign of the lifted determinant of four Cartesian points.
+[[gnu::noinline]] inline Sign incircle2_exact(double ax, double ay, double bx, double by, double cx, double cy,
+                                              double dx, double dy) {
+  using namespace expansion;
+  count_exact();
+  const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  if (!std::all_of(v, v + 8, [](double x) { return in_expansion_range<-210, 250>(x); })) {
+    const Dyadic one(1.0);
+    return sign_of(lifted_det4_any(one, Dyadic(ax), Dyadic(ay), one, Dyadic(bx), Dyadic(by), one, Dyadic(cx),
+                                   Dyadic(cy), one, Dyadic(dx), Dyadic(dy)));
+  }
+  double d[6], t[6];
+  two_diff(ax, dx, d[0], t[0]);
+  two_diff(ay, dy, d[1], t[1]);
+  two_diff(bx, dx, d[2], t[2]);
+  two_diff(by, dy, d[3], t[3]);
+  two_diff(cx, dx, d[4], t[4]);
+  two_diff(cy, dy, d[5], t[5]);
+  if (std::all_of(t, t + 6, [](double x) { return x == 0; })) {
+    const Expansion<1> A(d[0]), B(d[1]), C(d[2]), D(d[3]), E(d[4]), F(d[5]);
+    return incircle2_any(A, B, C, D, E, F).sign();
+  }
+  return incircle2_any(diff(ax, dx), diff(ay, dy), diff(bx, dx), diff(by, dy), diff(cx, dx), diff(cy, dy)).sign();
+}
+
+/// What the fast path of the Cartesian in-circle test certified.
+struct InCircleFast {
+  int orient;    ///< sign of Δ(a, b, c), or 2 when not certified
+  int incircle;  ///< sign of the lifted determinant, or 2 when not certified
+};
+
+//> incircle2-fast
+/// The fast path for four Cartesian points: H and Δ(a, b, c) (see the file comment).
+inline InCircleFast incircle2_fast(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                                   double dy) {
+  count_call();
+  const double adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy, cdx = cx - dx, cdy = cy - dy;
+  const double m1 = bdx * cdy - cdx * bdy, m2 = cdx * ady - adx * cdy, m3 = adx * bdy - bdx * ady;
+  const double det = ((adx * adx + ady * ady) * m1 + (bdx * bdx + bdy * bdy) * m2) + (cdx * cdx + cdy * cdy) * m3;
+  const double o = (m1 + m2) + m3;
+  const double mx = std::max({std::fabs(adx), std::fabs(bdx), std::fabs(cdx)});
+  const double my = std::max({std::fabs(ady), std::fabs(bdy), std::fabs(cdy)});
+  const double lo = std::min(mx, my), hi = std::max(mx, my);
+  InCircleFast r{2, 2};
+  if (lo >= 0x1p-200 && hi <= 0x1p200) {
+    const double ob = kInCircleOrientBound * mx * my;
+    r.orient = o > ob ? 1 : (-o > ob ? -1 : 2);
+    const double hb = kInCircle2Bound * lo * hi * (hi * hi);
+    r.incircle = det > hb ? 1 : (-det > hb ? -1 : 2);
+  }
+  return r;
+}
+//< incircle2-fast
+
+/// The exact stage of the homogeneous lifted determinant.
+[[gnu::noinline]] inline Sign incircle3_exact(const double (&v)[12]) {
+  using namespace expansion;
+  count_exact();
+  if (std::all_of(v, v + 12, [](double x) { return in_expansion_range<-80, 120>(x); })) {
+    Expansion<1> e[12];
+    for (int i = 0; i < 12; ++i) e[i] = Expansion<1>(v[i]);
+    return lifted_det4_any(e[0], e[1], e[2], e[3], e[4], e[5], e[6], e[7], e[8], e[9], e[10], e[11]).sign();
+  }
+  return sign_of(lifted_det4_any(Dyadic(v[0]), Dyadic(v[1]), Dyadic(v[2]), Dyadic(v[3]), Dyadic(v[4]), Dyadic(v[5]),
+                                 Dyadic(v[6]), Dyadic(v[7]), Dyadic(v[8]), Dyadic(v[9]), Dyadic(v[10]),
+                                 Dyadic(v[11])));
+}
+
+/// The sign of the homogeneous lifted determinant of [w, x, y] triples a, b, c, d (exact).
+inline Sign incircle3(double aw, double ax, double ay, double bw, double bx, double by, double cw, double cx,
+                      double cy, double dw, double dx, double dy) {
+  count_call();
+  const double det = lifted_det4_any(aw, ax, ay, bw, bx, by, cw, cx, cy, dw, dx, dy);
+  const double mw = std::max({std::fabs(aw), std::fabs(bw), std::fabs(cw), std::fabs(dw)});
+  const double mx = std::max({std::fabs(ax), std::fabs(bx), std::fabs(cx), std::fabs(dx)});
+  const double my = std::max({std::fabs(ay), std::fabs(by), std::fabs(cy), std::fabs(dy)});
+  const double lo = std::min({mw, mx, my}), hi = std::max({mw, mx, my});
+  if (lo >= 0x1p-100 && hi <= 0x1p100) {
+    const double w2 = mw * mw;
+    const double bound = kInCircle3Bound * (w2 * w2) * (mx * my) * (mx * mx + my * my);
+    if (det > bound) return POSITIVE;
+    if (-det > bound) return NEGATIVE;
+  }
+  const double v[12] = {aw, ax, ay, bw, bx, by, cw, cx, cy, dw, dx, dy};
+  return incircle3_exact(v);
+}
+
+}  // namespace t2::detail

@@ -1,0 +1,93 @@
+#pragma once
+// The exact rational oracle of the test suite, written independently of the library's
+// predicates: every value is a GMP rational (mpq), no filter, no expansion, no shared formula.
+#include <array>
+#include <utility>
+
+#include "t2/number.hpp"
+#include "t2/point.hpp"
+
+namespace t2::testing {
+
+/// The exact rational value of a coordinate of either type.
+inline Rational q(const double& v) { return to_rational(v); }
+/// The exact rational value of a coordinate of either type.
+inline Rational q(const Integer& v) { return Rational(v); }
+
+/// The sign of a rational.
+inline Sign sign_oracle(const Rational& v) { return static_cast<Sign>(sgn(v)); }
+
+/// The exact homogeneous triple of a point of either type.
+template <class P>
+std::array<Rational, 3> triple(const P& p) {
+  return {q(p.w()), q(p.x()), q(p.y())};
+}
+
+/// The drawn (Cartesian) position (x/w, y/w) of a proper point, exactly.
+template <class P>
+std::pair<Rational, Rational> pos(const P& p) {
+  return {q(p.x()) / q(p.w()), q(p.y()) / q(p.w())};
+}
+
+/// The squared Euclidean distance of two positions.
+inline Rational sq(const std::pair<Rational, Rational>& a, const std::pair<Rational, Rational>& b) {
+  const Rational dx = a.first - b.first, dy = a.second - b.second;
+  return dx * dx + dy * dy;
+}
+
+/// The determinant of an n×n rational matrix by Gaussian elimination with exact division
+/// (no cofactor formula shared with the library).
+template <std::size_t N>
+Rational det_oracle(std::array<std::array<Rational, N>, N> m) {
+  Rational det = 1;
+  for (std::size_t k = 0; k < N; ++k) {
+    std::size_t p = k;
+    while (p < N && m[p][k] == 0) ++p;
+    if (p == N) return 0;
+    if (p != k) {
+      std::swap(m[p], m[k]);
+      det = -det;
+    }
+    det *= m[k][k];
+    for (std::size_t i = k + 1; i < N; ++i) {
+      const Rational f = m[i][k] / m[k][k];
+      for (std::size_t j = k; j < N; ++j) m[i][j] -= f * m[k][j];
+    }
+  }
+  return det;
+}
+
+/// The 3×3 determinant of the homogeneous triples of p, q, r (Δ of seed 000, §4.3.4).
+template <class P>
+Rational det3_oracle(const P& p, const P& q, const P& r) {
+  return det_oracle<3>({triple(p), triple(q), triple(r)});
+}
+
+/// Δ(p, q, r), exactly.
+template <class P>
+Sign orient_oracle(const P& p, const P& q, const P& r) {
+  return sign_oracle(det3_oracle(p, q, r));
+}
+
+/// The lifted determinant with rows [X, Y, X² + Y², 1] of the drawn positions, times the sign
+/// of w² > 0 — i.e. the Euclidean in-circle sign of four proper points (positive when d is
+/// inside the circle through a, b, c turning counter-clockwise on the drawing).
+template <class P>
+Sign lifted_oracle(const P& a, const P& b, const P& c, const P& d) {
+  auto row = [](const P& p) {
+    const auto [x, y] = pos(p);
+    return std::array<Rational, 4>{x, y, x * x + y * y, Rational(1)};
+  };
+  return sign_oracle(det_oracle<4>({row(a), row(b), row(c), row(d)}));
+}
+
+/// Δ(a, b, c, d) of four points of R³ (rows [x, y, z, 1]): positive when d is below the plane
+/// of a, b, c seen counter-clockwise from above — the sign convention of Shewchuk's orient3d
+/// with the order of rows reversed (see orient3d's comment).
+inline Rational det4_points(const std::array<std::array<double, 3>, 4>& v) {
+  std::array<std::array<Rational, 4>, 4> m;
+  for (int i = 0; i < 4; ++i) m[i] = {to_rational(v[i][0]), to_rational(v[i][1]), to_rational(v[i][2]), Rational(1)};
+  return det_oracle<4>(m);
+}
+
+}  // namespace t2::testing
