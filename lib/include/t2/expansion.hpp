@@ -221,6 +221,57 @@ Expansion<2 * N * M> operator*(const Expansion<N>& e, const Expansion<M>& f) {
   return a;
 }
 
+/// Exact product by a one-component expansion: a single scale.
+template <int N>
+Expansion<2 * N> operator*(const Expansion<N>& e, const Expansion<1>& f) {
+  Expansion<2 * N> h;
+  h.n = f.n == 0 ? 0 : scale(e.n, e.c, f.c[0], h.c);
+  return h;
+}
+
+/// A double-word number hi + lo, |lo| ≤ u|hi| (u = 2⁻⁵³): about 106 bits, for the adaptive
+/// stages that need an accurate but not exact value. The operations are those of Joldes, Muller
+/// and Popescu, "Tight and rigorous error bounds for basic building blocks of double-word
+/// arithmetic" (ACM TOMS 44(2), 2017), with their proven relative error bounds, valid without
+/// underflow or overflow: exact products of two doubles, sums within 3u²/(1 − 4u) (their
+/// AccurateDWPlusDW), products within 5u² (DWTimesDW3, with fma).
+struct DoubleWord {
+  double hi = 0;  ///< the rounded value
+  double lo = 0;  ///< the rest
+};
+
+/// a·b exactly, as a double word.
+inline DoubleWord dw_prod(double a, double b) {
+  DoubleWord r;
+  two_prod(a, b, r.hi, r.lo);
+  return r;
+}
+
+/// x + y within relative error 3u²/(1 − 4u) (AccurateDWPlusDW).
+inline DoubleWord dw_add(DoubleWord x, DoubleWord y) {
+  double sh, sl, th, tl, vh, vl;
+  two_sum(x.hi, y.hi, sh, sl);
+  two_sum(x.lo, y.lo, th, tl);
+  fast_two_sum(sh, sl + th, vh, vl);
+  DoubleWord z;
+  fast_two_sum(vh, tl + vl, z.hi, z.lo);
+  return z;
+}
+
+/// −x, exactly.
+inline DoubleWord dw_neg(DoubleWord x) { return {-x.hi, -x.lo}; }
+
+/// x·y within relative error 5u² (DWTimesDW3).
+inline DoubleWord dw_mul(DoubleWord x, DoubleWord y) {
+  double ch, cl1;
+  two_prod(x.hi, y.hi, ch, cl1);
+  const double tl1 = std::fma(x.hi, y.lo, x.lo * y.lo);
+  const double cl2 = std::fma(x.lo, y.hi, tl1);
+  DoubleWord z;
+  fast_two_sum(ch, cl1 + cl2, z.hi, z.lo);
+  return z;
+}
+
 /// 2^e as a constant (exact for −1022 ≤ e ≤ 1023).
 constexpr double pow2(int e) {
   double r = 1;

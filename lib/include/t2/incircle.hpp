@@ -86,20 +86,20 @@ Sign lifted_sign(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoin
 
 }  // namespace detail
 
-/// Is d inside the oriented circle through a, b, c? POSITIVE inside (to the left of a → b → c),
-/// NEGATIVE outside, ZERO on the circle; CGAL's `side_of_oriented_circle` for front points. See
-/// the file comment for the definition on both sides of T². Throws `Undefined` when a, b, c are
-/// not proper points of one side, or are collinear. Exact for every finite input.
+namespace detail {
+
+/// The rest of in_circle on four Cartesian points when the fast path left something open.
+[[gnu::noinline]] inline Sign in_circle_cartesian_slow(const Point& a, const Point& b, const Point& c, const Point& d,
+                                                       InCircleFast f) {
+  if (f.orient == 2 && orient(a, b, c) == ZERO) throw collinear_circle();
+  return f.incircle != 2 ? static_cast<Sign>(f.incircle)
+                         : incircle2_exact(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
+}
+
+/// in_circle on any points (see the file comment).
 template <class T>
-Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
-  if constexpr (std::is_same_v<T, double>) {
-    if (a.w() == 1 && b.w() == 1 && c.w() == 1 && d.w() == 1) {  // front Cartesian points: sigma = +1
-      const auto f = detail::incircle2_fast(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
-      if (f.orient == 2 && orient(a, b, c) == ZERO) throw detail::collinear_circle();
-      return f.incircle != 2 ? static_cast<Sign>(f.incircle)
-                             : detail::incircle2_exact(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
-    }
-  }
+Sign in_circle_general(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c,
+                       const BasicPoint<T>& d) {
   const Sign sigma = sign_of(a.w());
   if (sigma == ZERO || sign_of(b.w()) != sigma || sign_of(c.w()) != sigma)
     throw Undefined(
@@ -110,7 +110,25 @@ Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<
   if (sign_of(d.w()) != sigma) return -o;  // beyond infinity or at infinity: outside the disk
   // The lifted sign is the Euclidean in-circle sign of the drawn positions: (their turn) *
   // (inside ? 1 : -1), and their turn is sigma * orient(a, b, c).
-  return sigma * detail::lifted_sign(a, b, c, d);
+  return sigma * lifted_sign(a, b, c, d);
+}
+
+}  // namespace detail
+
+/// Is d inside the oriented circle through a, b, c? POSITIVE inside (to the left of a → b → c),
+/// NEGATIVE outside, ZERO on the circle; CGAL's `side_of_oriented_circle` for front points. See
+/// the file comment for the definition on both sides of T². Throws `Undefined` when a, b, c are
+/// not proper points of one side, or are collinear. Exact for every finite input.
+template <class T>
+Sign in_circle(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c, const BasicPoint<T>& d) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (detail::all_one(a.w(), b.w(), c.w(), d.w())) {  // front Cartesian points: sigma = +1
+      const auto f = detail::incircle2_fast(a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), d.x(), d.y());
+      if (f.orient != 2 && f.incircle != 2) [[likely]] return static_cast<Sign>(f.incircle);
+      return detail::in_circle_cartesian_slow(a, b, c, d, f);
+    }
+  }
+  return detail::in_circle_general(a, b, c, d);
 }
 
 /// The unoriented test (seed 002's "side of circle", with the sign of CGAL's

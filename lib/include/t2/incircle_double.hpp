@@ -40,10 +40,26 @@
 /// is trusted when m_w, mₓ, m_y ∈ [2⁻¹⁰⁰, 2¹⁰⁰]: an underflow's 2⁻¹⁰⁷⁵ is then at most 2⁻²⁷⁵
 /// relative to the bound.
 ///
-/// **Exact stages.** Expansions (expansion.hpp): for Cartesian input, first with the rounded
-/// differences when two-diff shows that none was rounded (then that is H), else with the exact
-/// two-component differences; nonzero |coordinates| must lie in [2⁻²¹⁰, 2²⁵⁰] (degree 4). For
-/// homogeneous input the degree is 8 and the range [2⁻⁸⁰, 2¹²⁰]. Outside, dyadic GMP numbers.
+/// **Exact stages.** Expansions (expansion.hpp); nonzero |coordinates| must lie in [2⁻²¹⁰,
+/// 2²⁵⁰] (degree 4) for Cartesian input, in [2⁻⁸⁰, 2¹²⁰] (degree 8) for homogeneous input;
+/// outside, dyadic GMP numbers decide. For Cartesian input an adaptive stage comes first (in the
+/// spirit of Shewchuk's stages B and C). Two-diff splits each difference into its rounded head
+/// xᵢ and the tail tᵢ rounded away (|tᵢ| ≤ u|xᵢ|), and H(x + t) = E₀ + R₁ + R₂ with E₀ = H(x),
+/// R₁ = Σ tᵢ∂H/∂xᵢ(x) and R₂ the terms of degree ≥ 2 in the tails. Let P be the permanent (the
+/// sum of the magnitudes of the monomials of H at x).
+/// - E₀ is evaluated in double-word arithmetic (expansion.hpp): exact products, then sums with
+///   relative error ≤ 3u²(1 + 5u) and products with ≤ 5u². Each monomial goes through the minor's
+///   sum, the lift's sum, their product and two outer sums, so |ê − E₀| ≤ 18u²P.
+/// - A monomial of degree 4 gives at most ((1 + u)⁴ − 1 − 4u)|m(x)| ≤ 6.01u²|m(x)| to R₂, so
+///   |R₂| ≤ 6.01u²P; the monomials of R₁ sum to at most 4uP and its rounded value r₁ meets at most
+///   11 roundings: |R₁ − r₁| ≤ 4γ₁₁uP ≤ 44.1u²P.
+/// - s = fl(ê_hi + fl(ê_lo + r₁)) adds u|ê_lo + r₁| ≤ 5.1u²P and u|s|.
+/// So |H − s| ≤ 73.3u²P + u|s|, which 128u²P̂ (P̂ the rounded P, at least P(1 − u)⁷) exceeds
+/// whenever |s| exceeds it. This runs only when every nonzero head lies in [2⁻¹²⁰, 2¹²⁰]: every
+/// quantity is then 0 or above 2⁻⁷⁰⁰ (a multiple of the heads' lowest bits) and below 2⁵⁰⁰, so
+/// the relative error model holds. When it cannot decide (exactly cocircular input, mostly),
+/// H is evaluated exactly as an expansion: of the heads alone when no tail is nonzero, of the
+/// two-component differences otherwise.
 
 #include <algorithm>
 #include <cmath>
@@ -78,11 +94,43 @@ auto lifted_det4_any(const N& aw, const N& ax, const N& ay, const N& bw, const N
          ((r02 * r13 - r03 * r12) * (r20 * r31 - r21 * r30));
 }
 
-/// The Cartesian H of the file comment on any number type (differences already taken).
+/// The Cartesian H of the file comment on expansions (differences already taken), each term
+/// α·m₁ as âₓ·(âₓ·m₁) + â_y·(â_y·m₁): scaling by a short expansion is much cheaper than a
+/// product of two long ones (Shewchuk's order of operations).
 template <class N>
 auto incircle2_any(const N& adx, const N& ady, const N& bdx, const N& bdy, const N& cdx, const N& cdy) {
-  return ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)) +
-         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  const auto m1 = bdx * cdy - cdx * bdy, m2 = cdx * ady - adx * cdy, m3 = adx * bdy - bdx * ady;
+  return ((m1 * adx) * adx + (m1 * ady) * ady + ((m2 * bdx) * bdx + (m2 * bdy) * bdy)) +
+         ((m3 * cdx) * cdx + (m3 * cdy) * cdy);
+}
+
+/// R₁ of the file comment: the terms of H(x + t) that are linear in the tails t of the
+/// differences x = (âₓ, â_y, b̂ₓ, b̂_y, ĉₓ, ĉ_y), i.e. Σ tᵢ·∂H/∂xᵢ(x), rounded.
+inline double incircle2_first_order(const double (&x)[6], const double (&t)[6]) {
+  const double adx = x[0], ady = x[1], bdx = x[2], bdy = x[3], cdx = x[4], cdy = x[5];
+  const double m1 = bdx * cdy - cdx * bdy, m2 = cdx * ady - adx * cdy, m3 = adx * bdy - bdx * ady;
+  const double al = adx * adx + ady * ady, be = bdx * bdx + bdy * bdy, ga = cdx * cdx + cdy * cdy;
+  return ((t[0] * ((2 * adx * m1 - be * cdy) + ga * bdy) + t[1] * ((2 * ady * m1 + be * cdx) - ga * bdx)) +
+          (t[2] * ((2 * bdx * m2 + al * cdy) - ga * ady) + t[3] * ((2 * bdy * m2 - al * cdx) + ga * adx))) +
+         (t[4] * ((2 * cdx * m3 - al * bdy) + be * ady) + t[5] * ((2 * cdy * m3 + al * bdx) - be * adx));
+}
+
+/// H at the rounded differences x in double-word arithmetic (see the file comment).
+inline expansion::DoubleWord incircle2_double_word(const double (&x)[6]) {
+  using namespace expansion;
+  const double adx = x[0], ady = x[1], bdx = x[2], bdy = x[3], cdx = x[4], cdy = x[5];
+  auto minor = [](double p, double q, double r, double s) { return dw_add(dw_prod(p, q), dw_neg(dw_prod(r, s))); };
+  auto lift = [](double p, double q) { return dw_add(dw_prod(p, p), dw_prod(q, q)); };
+  return dw_add(dw_add(dw_mul(lift(adx, ady), minor(bdx, cdy, cdx, bdy)), dw_mul(lift(bdx, bdy), minor(cdx, ady, adx, cdy))),
+                dw_mul(lift(cdx, cdy), minor(adx, bdy, bdx, ady)));
+}
+
+/// The permanent of H at x: the sum of the magnitudes of its monomials, rounded.
+inline double incircle2_permanent(const double (&x)[6]) {
+  const double adx = x[0], ady = x[1], bdx = x[2], bdy = x[3], cdx = x[4], cdy = x[5];
+  return ((adx * adx + ady * ady) * (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) +
+          (bdx * bdx + bdy * bdy) * (std::fabs(cdx * ady) + std::fabs(adx * cdy))) +
+         (cdx * cdx + cdy * cdy) * (std::fabs(adx * bdy) + std::fabs(bdx * ady));
 }
 
 /// The exact sign of the lifted determinant of four Cartesian points.
@@ -103,10 +151,18 @@ auto incircle2_any(const N& adx, const N& ady, const N& bdx, const N& bdy, const
   two_diff(by, dy, d[3], t[3]);
   two_diff(cx, dx, d[4], t[4]);
   two_diff(cy, dy, d[5], t[5]);
-  if (std::all_of(t, t + 6, [](double x) { return x == 0; })) {
-    const Expansion<1> A(d[0]), B(d[1]), C(d[2]), D(d[3]), E(d[4]), F(d[5]);
-    return incircle2_any(A, B, C, D, E, F).sign();
+  //> incircle2-adaptive
+  if (std::all_of(d, d + 6, [](double x) { return in_expansion_range<-120, 120>(x); })) {
+    const DoubleWord e0 = incircle2_double_word(d);  // H of the rounded differences, to ~u²
+    const double s = e0.hi + (e0.lo + incircle2_first_order(d, t));
+    const double bound = 0x1p-99 * incircle2_permanent(d);  // 128u²P
+    const int sign = (s > bound) - (-s > bound);
+    if (sign != 0) return static_cast<Sign>(sign);
   }
+  const Expansion<1> A(d[0]), B(d[1]), C(d[2]), D(d[3]), E(d[4]), F(d[5]);
+  if (std::all_of(t, t + 6, [](double x) { return x == 0; }))  // no difference was rounded
+    return incircle2_any(A, B, C, D, E, F).sign();
+  //< incircle2-adaptive
   return incircle2_any(diff(ax, dx), diff(ay, dy), diff(bx, dx), diff(by, dy), diff(cx, dx), diff(cy, dy)).sign();
 }
 
@@ -131,9 +187,11 @@ inline InCircleFast incircle2_fast(double ax, double ay, double bx, double by, d
   InCircleFast r{2, 2};
   if (lo >= 0x1p-200 && hi <= 0x1p200) {
     const double ob = kInCircleOrientBound * mx * my;
-    r.orient = o > ob ? 1 : (-o > ob ? -1 : 2);
+    const int so = (o > ob) - (-o > ob);
+    r.orient = so != 0 ? so : 2;
     const double hb = kInCircle2Bound * lo * hi * (hi * hi);
-    r.incircle = det > hb ? 1 : (-det > hb ? -1 : 2);
+    const int sh = (det > hb) - (-det > hb);
+    r.incircle = sh != 0 ? sh : 2;
   }
   return r;
 }
@@ -165,8 +223,8 @@ inline Sign incircle3(double aw, double ax, double ay, double bw, double bx, dou
   if (lo >= 0x1p-100 && hi <= 0x1p100) {
     const double w2 = mw * mw;
     const double bound = kInCircle3Bound * (w2 * w2) * (mx * my) * (mx * mx + my * my);
-    if (det > bound) return POSITIVE;
-    if (-det > bound) return NEGATIVE;
+    const int sign = (det > bound) - (-det > bound);
+    if (sign != 0) [[likely]] return static_cast<Sign>(sign);
   }
   const double v[12] = {aw, ax, ay, bw, bx, by, cw, cx, cy, dw, dx, dy};
   return incircle3_exact(v);

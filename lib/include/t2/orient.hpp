@@ -2,6 +2,8 @@
 /// @file orient.hpp
 /// @brief Δ(p, q, r): the orientation of three points of T² (seed 000, §4.3.4).
 
+#include <bit>
+#include <cstdint>
 #include <type_traits>
 
 #include "t2/filter.hpp"
@@ -19,11 +21,17 @@ N det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, c
 
 namespace detail {
 
+/// True when every argument is exactly 1.0: compared as bit patterns, one branch for all.
+inline bool all_one(auto... w) {
+  constexpr std::uint64_t one = 0x3FF0000000000000;  // the bits of 1.0
+  return ((std::bit_cast<std::uint64_t>(static_cast<double>(w)) ^ one) | ...) == 0;
+}
+
 /// Δ of three homogeneous triples of doubles: the Cartesian formulas when every w is 1 (three
 /// comparisons), the homogeneous ones otherwise (orient_double.hpp).
 inline Sign orient_double(double a, double b, double c, double d, double e, double f, double g, double h,
                           double i) {
-  if (a == 1 && d == 1 && g == 1) return orient2(b, c, e, f, h, i);
+  if (all_one(a, d, g)) return orient2(b, c, e, f, h, i);
   return orient3(a, b, c, d, e, f, g, h, i);
 }
 

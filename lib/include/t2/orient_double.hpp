@@ -111,8 +111,8 @@ inline Sign orient2(double px, double py, double qx, double qy, double rx, doubl
   const double a = qx - px, b = qy - py, c = rx - px, d = ry - py;
   const double l = a * d, r = b * c, det = l - r;
   const double bound = kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000;
-  if (det > bound) return POSITIVE;
-  if (-det > bound) return NEGATIVE;
+  const int sign = (det > bound) - (-det > bound);  // no branch on the (random) sign itself
+  if (sign != 0) [[likely]] return static_cast<Sign>(sign);
   return orient2_exact(px, py, qx, qy, rx, ry);
 }
 //< orient2-fast
@@ -141,8 +141,8 @@ inline Sign orient3(double a, double b, double c, double d, double e, double f, 
   if (lo == 0) return ZERO;  // a column of zeros
   if (lo >= 0x1p-300 && hi <= 0x1p300) {
     const double bound = kOrient3Bound * m0 * m1 * m2;
-    if (det > bound) return POSITIVE;
-    if (-det > bound) return NEGATIVE;
+    const int sign = (det > bound) - (-det > bound);
+    if (sign != 0) [[likely]] return static_cast<Sign>(sign);
   }
   return orient3_exact(a, b, c, d, e, f, g, h, i);
 }
