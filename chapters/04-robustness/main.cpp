@@ -4,6 +4,8 @@
 // Every number below is computed here; nothing is pasted. Deterministic: no clocks, and the
 // random inputs come from a fixed-seed std::mt19937_64 turned into doubles by bit arithmetic
 // (std::uniform_real_distribution differs between standard libraries).
+// This program prints the filter statistics: they count only where T2_FILTER_STATS is defined.
+#define T2_FILTER_STATS 1
 #include <t2/t2.hpp>
 
 #include <array>
@@ -255,7 +257,7 @@ Count counted(Body body) {
 }
 
 void filter_costs(const SignMap&) {
-  std::cout << "== 5. How often the filter falls back to GMP (t2::filter_stats())\n";
+  std::cout << "== 5. How often the fast path cannot decide (t2::filter_stats())\n";
   std::mt19937_64 g(2026);
   const int n = 100000;
   //> filter-random
@@ -298,18 +300,33 @@ void filter_costs(const SignMap&) {
       (void)t2::orient(p, q, t2::Point(a * p.w() + b * q.w(), a * p.x() + b * q.x(), a * p.y() + b * q.y()));
     }
   });
-  // One evaluation of the filter, opened up: the value, the magnitude and the bound.
+  // One evaluation of the fast path, opened up: the value and the bound, by the library's code.
   auto show = [](const char* name, const t2::Point& p, const t2::Point& q, const t2::Point& r) {
     //> filter-worked
-    const t2::Filtered d = t2::det3<t2::Filtered>(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y());
-    const double bound = (d.depth + 3) * 0x1p-53 * d.mag;  // the certificate of filter.hpp
+    const auto [value, bound] = t2::detail::orient2_filter(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
     //< filter-worked
-    std::printf("%-20s v = %-24.17g mag = %-10.6g depth = %d  bound = %-10.3g  %s\n", name, d.v, d.mag, d.depth, bound,
-                std::fabs(d.v) > bound ? "certain" : "uncertain: exact stage");
+    std::printf("%-20s value = %-24.17g bound = %-10.3g  %s\n", name, value, bound,
+                std::fabs(value) > bound ? "certain" : "uncertain: exact stage");
   };
   show("a random triple", t2::Point(1, 0.25, -0.5), t2::Point(1, 0.75, 0.125), t2::Point(1, -0.375, 0.5));
   show("grid cell (3, 200)", t2::Point::cartesian(0.5 + 3 * 0x1p-53, 0.5 + 200 * 0x1p-53), t2::Point::cartesian(12, 12),
        t2::Point::cartesian(24, 24));
+  // Expansion arithmetic on two small examples, then the grid cell's determinant exactly.
+  {
+    using namespace t2::expansion;
+    //> expansion-worked
+    double x, y;
+    two_sum(0.1, 0.2, x, y);  // 0.1 + 0.2 = x + y exactly
+    std::printf("two_sum(0.1, 0.2)    x = %.17g  y = %.17g\n", x, y);
+    two_prod(0.1, 0.1, x, y);  // 0.1 * 0.1 = x + y exactly
+    std::printf("two_prod(0.1, 0.1)   x = %.17g  y = %.17g\n", x, y);
+    const double px = 0.5 + 3 * 0x1p-53, py = 0.5 + 200 * 0x1p-53;  // the grid cell (3, 200)
+    const auto det = diff(12, px) * diff(24, py) - diff(12, py) * diff(24, px);
+    std::printf("grid cell (3, 200)   det = %.17g (rounded sum of %d components), sign %+d\n", det.estimate(), det.n,
+                static_cast<int>(det.sign()));
+    //< expansion-worked
+    for (int i = 0; i < det.n; ++i) std::printf("  component %d: %a\n", i, det.c[i]);
+  }
   auto row = [](const char* name, Count c) {
     std::printf("%-22s %7llu calls %7llu exact  (%7.3f%%)\n", name, static_cast<unsigned long long>(c.calls),
                 static_cast<unsigned long long>(c.exact), 100.0 * static_cast<double>(c.exact) / static_cast<double>(c.calls));

@@ -92,7 +92,6 @@ inline Sign orient_dyadic(double a, double b, double c, double d, double e, doub
   two_diff(ry, py, d, d1);
   const auto e0 = prod(a, d) - prod(b, c);  // exact: a 4-component expansion
   if (a1 == 0 && b1 == 0 && c1 == 0 && d1 == 0) return e0.sign();
-  //< orient2-exact
   const double h = e0.approx();
   const double r1 = (a * d1 + a1 * d) - (b * c1 + b1 * c);
   const double t = (std::fabs(a * d1) + std::fabs(a1 * d)) + (std::fabs(b * c1) + std::fabs(b1 * c));
@@ -102,15 +101,27 @@ inline Sign orient_dyadic(double a, double b, double c, double d, double e, doub
   if (-s > bound) return NEGATIVE;
   const auto A = diff(qx, px), B = diff(qy, py), C = diff(rx, px), D = diff(ry, py);
   return (A * D - B * C).sign();
+  //< orient2-exact
 }
 
 //> orient2-fast
+/// What a fast path computes: the rounded value of the polynomial and its error bound.
+struct Filtered2 {
+  double value;  ///< the polynomial evaluated in doubles
+  double bound;  ///< |value − exact| < bound when no overflow occurred (see the file comment)
+};
+
+/// The fast path for three Cartesian points: Δ in doubles and the bound of the file comment.
+inline Filtered2 orient2_filter(double px, double py, double qx, double qy, double rx, double ry) {
+  const double a = qx - px, b = qy - py, c = rx - px, d = ry - py;
+  const double l = a * d, r = b * c;
+  return {l - r, kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000};
+}
+
 /// Δ of three Cartesian points (px, py), (qx, qy), (rx, ry): exact (see the file comment).
 inline Sign orient2(double px, double py, double qx, double qy, double rx, double ry) {
   count_call();
-  const double a = qx - px, b = qy - py, c = rx - px, d = ry - py;
-  const double l = a * d, r = b * c, det = l - r;
-  const double bound = kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000;
+  const auto [det, bound] = orient2_filter(px, py, qx, qy, rx, ry);
   const int sign = (det > bound) - (-det > bound);  // no branch on the (random) sign itself
   if (sign != 0) [[likely]] return static_cast<Sign>(sign);
   return orient2_exact(px, py, qx, qy, rx, ry);
