@@ -86,11 +86,14 @@ inline FilterStats& filter_stats() {
 //> filter-stats
 /// True when this translation unit counts (built with the compile definition T2_FILTER_STATS).
 ///
-/// The counting code is in headers only (the compiled part of the library calls no predicate),
-/// so a definition on one target is enough: `target_compile_definitions(prog PRIVATE
-/// T2_FILTER_STATS)`, or the CMake option `T2_FILTER_STATS` for every target of the build.
-/// Define it for a whole program or not at all: two translation units of one program that
-/// disagree would hold two different definitions of the same inline predicate.
+/// The counting code is in the headers. To count every call of a program, configure with the
+/// CMake option `T2_FILTER_STATS=ON`: the library and every target are then built with it. A
+/// program that calls the predicates itself can instead define it on its own target
+/// (`target_compile_definitions(prog PRIVATE T2_FILTER_STATS)`, or `#define` before the first
+/// include, as chapter 04 does): then its own calls count, and calls made inside the compiled
+/// library (lib/src, e.g. the triangulation) do not. Strictly, such a mix gives one inline
+/// predicate two definitions in one program; they differ only in counting, so every answer is
+/// the same whichever the linker keeps, but the counts are then a lower bound.
 #ifdef T2_FILTER_STATS
 inline constexpr bool filter_stats_enabled = true;
 #else
