@@ -1,5 +1,5 @@
 #pragma once
-// The figure gallery's shared parts: output place, colours, style shorthands, views, scene
+// The figure gallery's shared parts: output place, style shorthands, views, scene
 // loading, and the entry list each part of the gallery contributes (one file per part:
 // thesis3.cpp, thesis4_primitives.cpp, thesis4_predicates.cpp).
 #include <t2/scene.hpp>
@@ -16,12 +16,7 @@ namespace dr = t2::draw;
 namespace fs = std::filesystem;
 using t2::Point;
 
-inline const char* const kBlue = "#1f77b4";
-inline const char* const kRed = "#d62728";
-inline const char* const kGreen = "#2ca02c";
-inline const char* const kOrange = "#ff7f0e";
-inline const char* const kPurple = "#9467bd";
-inline const char* const kGrey = "#999999";
+namespace pal = t2::draw::palette;  ///< the colours of the figures
 
 /// Where the figures go (figures/gallery, or the directory after --figures).
 const fs::path& out_dir();
@@ -49,8 +44,7 @@ inline dr::SphereView sphere(double lat = 25, double lon = -65) {
   return v;
 }
 
-/// Adds the segments and polygons of a scene file of gallery/scenes, in one colour, with its
-/// labelled points.
+/// Adds the blocks of a scene file of gallery/scenes, all in one colour (`t2::draw::add_scene`).
 void add_scene(dr::Figure& f, const std::string& file, const char* colour);
 
 /// One figure of the thesis: its number ("4.7"), the file it is drawn to, our caption, and the

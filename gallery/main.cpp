@@ -1,8 +1,8 @@
 // The figure gallery: the figures of seed 000 (the T2-in-CGAL thesis), chapters 3 and 4,
 // redrawn by the library. `gallery [--figures DIR]` writes figures/gallery/*.svg;
 // `gallery --markdown` prints the gallery page docs/gallery.md (a test checks that the
-// committed page is what this prints). Scenes of points, segments and polygons are read from
-// gallery/scenes/*.scene; lines, circles and the rest are built by the part files.
+// committed page is what this prints). Scenes are read from gallery/scenes/*.scene; what a
+// figure computes is built by the part files.
 #include <fmt/core.h>
 
 #include <cstdio>
@@ -17,14 +17,7 @@ const fs::path& out_dir() { return g_dir; }
 fs::path scene_path(const std::string& file) { return fs::path(T2_GALLERY_SCENES) / file; }
 
 void add_scene(dr::Figure& f, const std::string& file, const char* colour) {
-  const t2::Scene s = t2::read_scene(scene_path(file));
-  for (const auto& seg : s.segments) f.segment(seg.a.point, seg.b.point, st(colour).width(2));
-  for (const auto& poly : s.polygons) {
-    std::vector<Point> v;
-    for (const auto& p : poly.vertices) v.push_back(p.point);
-    f.add(v, st(colour).width(2).fill(colour));
-  }
-  for (const auto& p : s.points) f.add(p.point, lab(colour, p.label));
+  dr::add_scene(f, t2::read_scene(scene_path(file)), dr::SceneStyles::in(colour));
 }
 
 std::vector<Entry> all_entries() {

@@ -10,20 +10,20 @@ namespace {
 
 void fig_3_1() {  // T1 as a circle
   dr::Figure f;
-  f.add(t2::T1(1, 0), lab(kBlue, "[1, 0]", -40));
-  f.add(t2::T1(1, 1), lab(kBlue, "[1, 1]", 30));
-  f.add(t2::T1(-1, -1), lab(kRed, "¬[1, 1] = [−1, −1]", 210));
-  f.add(t2::T1(-1, 0.5), lab(kRed, "[−1, 0.5]", 170));
+  f.add(t2::T1(1, 0), lab(pal::blue, "[1, 0]", -40));
+  f.add(t2::T1(1, 1), lab(pal::blue, "[1, 1]", 30));
+  f.add(t2::T1(-1, -1), lab(pal::red, "¬[1, 1] = [−1, −1]", 210));
+  f.add(t2::T1(-1, 0.5), lab(pal::red, "[−1, 0.5]", 170));
   dr::T1View v;
   dr::save(f, v, out_dir() / "fig-3-1-t1-circle.svg");
 }
 
 void fig_3_2() {  // T1 as two copies of the line
   dr::Figure f;
-  f.add(t2::T1(1, 1), lab(kBlue, "[1, 1]", 90));
-  f.add(t2::T1(1, -2), lab(kBlue, "[1, −2]", 90));
-  f.add(t2::T1(-1, -1), lab(kRed, "[−1, −1]", -90));
-  f.add(t2::T1(-1, 2.5), lab(kRed, "[−1, 2.5]", -90));
+  f.add(t2::T1(1, 1), lab(pal::blue, "[1, 1]", 90));
+  f.add(t2::T1(1, -2), lab(pal::blue, "[1, −2]", 90));
+  f.add(t2::T1(-1, -1), lab(pal::red, "[−1, −1]", -90));
+  f.add(t2::T1(-1, 2.5), lab(pal::red, "[−1, 2.5]", -90));
   dr::T1View v;
   v.model = dr::T1Model::lines;
   dr::save(f, v, out_dir() / "fig-3-2-t1-lines.svg");
@@ -32,12 +32,12 @@ void fig_3_2() {  // T1 as two copies of the line
 dr::Figure models_scene() {
   dr::Figure f;
   const Point p(1, 1.5, 1), q(-1, 2, -1.5), r(0, -1, 1);
-  f.add(p, lab(kBlue, "p = [1, 1.5, 1]", 45));
-  f.add(t2::antipode(p), lab(kRed, "¬p", -135));
-  f.add(q, lab(kRed, "q = [−1, 2, −1.5]", -45));
-  f.add(r, lab(kGreen, "r = [0, −1, 1]", 135));
-  f.add(Point(1, 0, 0), lab("#000000", "o = [1, 0, 0]", -60).marker(dr::Marker::square));
-  f.add(Point(-1, 0, 0), lab("#555555", "¬o", 120).marker(dr::Marker::square));
+  f.add(p, lab(pal::blue, "p = [1, 1.5, 1]", 45));
+  f.add(t2::antipode(p), lab(pal::red, "¬p", -135));
+  f.add(q, lab(pal::red, "q = [−1, 2, −1.5]", -45));
+  f.add(r, lab(pal::green, "r = [0, −1, 1]", 135));
+  f.add(Point(1, 0, 0), lab(pal::black, "o = [1, 0, 0]", -60).marker(dr::Marker::square));
+  f.add(Point(-1, 0, 0), lab(pal::dark_grey, "¬o", 120).marker(dr::Marker::square));
   return f;
 }
 
@@ -51,16 +51,16 @@ void fig_3_4() {
 void fig_3_5() {  // orientation: u runs from q to r, the segment pu turns about p
   dr::Figure f;
   const Point p(1, -2, -1), q(1, 2, -1.5), r(1, 1, 2);
-  f.segment(q, r, st(kBlue).width(2).arrow());
+  f.segment(q, r, st(pal::blue).width(2).arrow());
   for (double t : {0.2, 0.5, 0.8}) {
     const Point u(1, q.x() + t * (r.x() - q.x()), q.y() + t * (r.y() - q.y()));
-    f.segment(p, u, st("#999999").width(1));
+    f.segment(p, u, st(pal::light_grey).width(1));
   }
-  f.add(p, lab("#000000", "p", 180));
-  f.add(q, lab(kBlue, "q", -45));
-  f.add(r, lab(kBlue, "r", 45));
-  f.add(Point(1, 1.5, 0.25), lab(kGreen, "u", 0).size(2.5));
-  f.label(Point(1, -0.3, 1.4), "Δ(p, q, r) > 0: counter-clockwise", st(kGreen));
+  f.add(p, lab(pal::black, "p", 180));
+  f.add(q, lab(pal::blue, "q", -45));
+  f.add(r, lab(pal::blue, "r", 45));
+  f.add(Point(1, 1.5, 0.25), lab(pal::green, "u", 0).size(2.5));
+  f.label(Point(1, -0.3, 1.4), "Δ(p, q, r) > 0: counter-clockwise", st(pal::green));
   dr::PlaneView v = plane(3);
   v.omega = false;
   dr::save(f, v, out_dir() / "fig-3-5-orientation.svg");
@@ -69,18 +69,18 @@ void fig_3_5() {  // orientation: u runs from q to r, the segment pu turns about
 void fig_3_6() {  // a line on the sphere: a great circle
   dr::Figure f;
   const Point p(1, 1, 0), q(1, 0, 1.5);
-  f.add(t2::join(p, q), st(kBlue).width(2).arrow().label("p ∨ q"));
-  f.add(p, lab(kBlue, "p", -45));
-  f.add(q, lab(kBlue, "q", 135));
-  f.add(t2::antipode(p), lab(kRed, "¬p", 135));
-  f.add(t2::antipode(q), lab(kRed, "¬q", -45));
+  f.add(t2::join(p, q), st(pal::blue).width(2).arrow().label("p ∨ q"));
+  f.add(p, lab(pal::blue, "p", -45));
+  f.add(q, lab(pal::blue, "q", 135));
+  f.add(t2::antipode(p), lab(pal::red, "¬p", 135));
+  f.add(t2::antipode(q), lab(pal::red, "¬q", -45));
   dr::save(f, sphere(), out_dir() / "fig-3-6-line-sphere.svg");
 }
 
 void fig_3_7() {  // a segment on the sphere: the shorter arc
   dr::Figure f;
-  f.add(t2::join(Point(1, 1, -0.5), Point(1, -1, 1.5)), st("#bbbbbb").width(1));
-  add_scene(f, "fig-3-7.scene", kBlue);
+  f.add(t2::join(Point(1, 1, -0.5), Point(1, -1, 1.5)), st(pal::pale_grey).width(1));
+  add_scene(f, "fig-3-7.scene", pal::blue);
   dr::save(f, sphere(), out_dir() / "fig-3-7-segment-sphere.svg");
 }
 
@@ -93,7 +93,7 @@ void fig_3_8_to_3_10() {
                {"fig-3-10.scene", "fig-3-10-segment-front-to-back.svg"}};
   for (const auto& c : cases) {
     dr::Figure f;
-    add_scene(f, c.scene, kBlue);
+    add_scene(f, c.scene, pal::blue);
     dr::save_both(f, plane(4), sphere(), out_dir() / c.out);
   }
 }
@@ -102,13 +102,13 @@ dr::Figure sides_scene() {
   dr::Figure f;
   const Point a(1, 1, 0.5), b(1, -1, -1);
   const t2::Line r = t2::join(a, b);
-  f.add(r, st(kBlue).width(2).arrow().shade().label("r").label_angle(150));
+  f.add(r, st(pal::blue).width(2).arrow().shade().label("r").label_angle(150));
   // Four test points; their captions come from the exact predicate r ⋄ p.
   const Point pts[] = {Point(1, -2, 1.6), Point(-1, -1.2, 0.8), Point(1, 1.3, -2.2), Point(-1, 2.7, -0.9)};
   for (const Point& p : pts) {
     const t2::Sign s = t2::side(r, p);
     const std::string text = std::string(p.w() > 0 ? "front" : "back") + ", r ⋄ p " + (s > 0 ? "> 0" : "< 0");
-    f.add(p, lab(s > 0 ? kGreen : kRed, text).size(3));
+    f.add(p, lab(s > 0 ? pal::green : pal::red, text).size(3));
   }
   return f;
 }

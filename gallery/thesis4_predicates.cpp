@@ -14,9 +14,6 @@ namespace {
 
 using t2::Sign;
 
-const char* const kBlack = "#000000";
-const char* const kDark = "#555555";
-
 // The seed's formulas that the figures show failing (§4.3.2 and Algorithm 1, §4.3.7). They
 // are not part of the library: chapter 03's program teaches them.
 Point naive_midpoint(const Point& p, const Point& q) {  // [2 w0 w1, x0 w1 + x1 w0, y0 w1 + y1 w0]
@@ -70,11 +67,11 @@ void fig_4_12() {
           "norm(r) points into the positive side of r");
   const t2::Line rp = t2::join(k.a, n);
   dr::Figure f;
-  f.add(rp, st(kGreen).width(1.5).shade().fill(kGreen));
-  f.label(Point(1, -0.45, -2.8), "r⊥", st(kGreen).label_angle(0));
-  f.add(r, st(kBlue).width(2).arrow().label("r = a ∨ c").label_angle(-60));
-  f.add(k.c, lab(kBlue, "c", 30).size(4.5));
-  f.add(n, lab(kGreen, "norm(r)", 110).marker(dr::Marker::square));
+  f.add(rp, st(pal::green).width(1.5).shade().fill(pal::green));
+  f.label(Point(1, -0.45, -2.8), "r⊥", st(pal::green).label_angle(0));
+  f.add(r, st(pal::blue).width(2).arrow().label("r = a ∨ c").label_angle(-60));
+  f.add(k.c, lab(pal::blue, "c", 30).size(4.5));
+  f.add(n, lab(pal::green, "norm(r)", 110).marker(dr::Marker::square));
   const Point bs[] = {k.b1, k.b2};
   const char* names[] = {"b₁", "b₂"};
   std::string title;
@@ -84,15 +81,15 @@ void fig_4_12() {
     const Sign d = t2::compare_distance(k.a, b, k.c);  // a against b, distances to c
     require(s == -d, "r⊥ ⋄ b > 0 exactly when a is nearer to c than b (seed §4.3.1)");
     // The sweep line through b: perpendicular to the way towards c.
-    f.add(t2::join(b, n), st(kGrey).width(1));
-    f.add(b, lab(s > 0 ? kGreen : kRed, names[i], i == 0 ? 180 : 0).size(4));
+    f.add(t2::join(b, n), st(pal::light_grey).width(1));
+    f.add(b, lab(s > 0 ? pal::green : pal::red, names[i], i == 0 ? 180 : 0).size(4));
     const std::string da = "d(a, c)", db = std::string("d(") + names[i] + ", c)";
     title += std::string(i ? "     " : "") + "r⊥ ⋄ " + names[i] + " " + sign_text(s) + ": " +
              (d < 0 ? da + " < " + db : (d > 0 ? db + " < " + da : da + " = " + db));
   }
   require(t2::side(rp, k.b1) > 0 && t2::side(rp, k.b2) < 0, "caption 4.12: b1 positive, b2 negative");
   f.title(title);
-  f.add(k.a, lab(kBlack, "a", -120).size(4.5));
+  f.add(k.a, lab(pal::black, "a", -120).size(4.5));
   dr::PlaneView v = plane(4);
   v.size = 440;
   dr::save(f, v, out_dir() / "fig-4-12-sweep-rule.svg");
@@ -107,7 +104,7 @@ void fig_4_13() {
   const Point b(0, 1, 0);
   const double ts[] = {0.5, 1.5, 4};
   const char* names[] = {"a₁", "a₂", "a₃"};
-  const char* colours[] = {kRed, kOrange, kGreen};
+  const char* colours[] = {pal::red, pal::orange, pal::green};
   // The order of the distances, from the exact predicate on the points of T² [1, t, 0].
   std::string order;
   for (int i = 2; i >= 0; --i) {
@@ -121,10 +118,10 @@ void fig_4_13() {
   dr::Figure f;
   // The section: o at (0, 0); a point (X, W) of the section is drawn at the front point [1, X, W].
   auto at = [](double X, double W) { return Point(1, X, W); };
-  f.segment(at(-0.4, 1), at(4.8, 1), st(kDark).width(1.2));
-  f.label(at(-0.4, 1), "w = 1", st(kDark).label_angle(90));
-  f.arrow(at(0, 0), at(4.8, 0), st(kBlue).width(2));
-  f.label(at(4.6, 0), "towards b = [0, 1, 0]", st(kBlue).label_angle(-90));
+  f.segment(at(-0.4, 1), at(4.8, 1), st(pal::dark_grey).width(1.2));
+  f.label(at(-0.4, 1), "w = 1", st(pal::dark_grey).label_angle(90));
+  f.arrow(at(0, 0), at(4.8, 0), st(pal::blue).width(2));
+  f.label(at(4.6, 0), "towards b = [0, 1, 0]", st(pal::blue).label_angle(-90));
   for (int i = 0; i < 3; ++i) {
     const double ang = std::atan2(1.0, ts[i]);  // a_i = [1, t_i, 0] is the point (t_i, 1) of the section
     const double len = std::min(4.8 / std::cos(ang), 2.6 / std::sin(ang));
@@ -132,8 +129,8 @@ void fig_4_13() {
     f.polyline(arc(0, 0, 0.4 + 0.22 * i, 0, ang, 24), st(colours[i]).width(2.2));
     f.add(at(ts[i], 1), lab(colours[i], names[i], i == 0 ? 140 : 100).size(4));
   }
-  f.add(at(0, 0), lab(kBlack, "o", 180).marker(dr::Marker::square));
-  f.label(at(2.2, -1.1), order, st(kBlack).label_angle(0));
+  f.add(at(0, 0), lab(pal::black, "o", 180).marker(dr::Marker::square));
+  f.label(at(2.2, -1.1), order, st(pal::black).label_angle(0));
   dr::PlaneView v = plane(2.8);
   v.cx = 2.2;
   v.cy = 0.6;
@@ -149,13 +146,13 @@ void fig_4_14() {
   const Sign s = t2::compare_distance(b, c, a);  // b against c, distances to a
   require(s < 0, "caption 4.14: b is the nearer");
   dr::Figure f;
-  f.segment(o, a, st(kGrey).width(1));
-  f.segment(a, b, st(kGreen).width(2.2));
-  f.segment(a, c, st(kOrange).width(2.2));
-  f.add(o, lab(kDark, "o", -120).marker(dr::Marker::square));
-  f.add(a, lab(kBlack, "a", -60).size(4.5));
-  f.add(b, lab(kGreen, "b: " + near_to(s, "a"), -60).size(4.5));
-  f.add(c, lab(kOrange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), -80).size(4.5));
+  f.segment(o, a, st(pal::light_grey).width(1));
+  f.segment(a, b, st(pal::green).width(2.2));
+  f.segment(a, c, st(pal::orange).width(2.2));
+  f.add(o, lab(pal::dark_grey, "o", -120).marker(dr::Marker::square));
+  f.add(a, lab(pal::black, "a", -60).size(4.5));
+  f.add(b, lab(pal::green, "b: " + near_to(s, "a"), -60).size(4.5));
+  f.add(c, lab(pal::orange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), -80).size(4.5));
   dr::save_both(f, plane(3), sphere(35, 58), out_dir() / "fig-4-14-proper-to-two-infinite.svg");
 }
 
@@ -167,15 +164,15 @@ void fig_4_15() {
   const Sign s = t2::compare_distance(b, c, a);
   require(s < 0, "caption 4.15: b is the nearer");
   dr::Figure f;
-  for (const Point& p : {a, b, c}) f.segment(o, p, st(kGrey).width(1));
-  f.polyline(arc(0, 0, 0.9, 0, theta(b), 24), st(kGreen).width(2.2));
-  f.polyline(arc(0, 0, 1.6, 0, theta(c), 40), st(kOrange).width(2.2));
-  f.segment(a, c, st(kOrange).width(3).layer(-1));  // along Ω: the arc of the angle aôc
-  f.segment(a, b, st(kGreen).width(3));
-  f.add(o, lab(kDark, "o", -120).marker(dr::Marker::square));
-  f.add(a, lab(kBlack, "a", -30).size(4.5));
-  f.add(b, lab(kGreen, "b: " + near_to(s, "a"), 180).size(4.5));
-  f.add(c, lab(kOrange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), -100).size(4.5));
+  for (const Point& p : {a, b, c}) f.segment(o, p, st(pal::light_grey).width(1));
+  f.polyline(arc(0, 0, 0.9, 0, theta(b), 24), st(pal::green).width(2.2));
+  f.polyline(arc(0, 0, 1.6, 0, theta(c), 40), st(pal::orange).width(2.2));
+  f.segment(a, c, st(pal::orange).width(3).layer(-1));  // along Ω: the arc of the angle aôc
+  f.segment(a, b, st(pal::green).width(3));
+  f.add(o, lab(pal::dark_grey, "o", -120).marker(dr::Marker::square));
+  f.add(a, lab(pal::black, "a", -30).size(4.5));
+  f.add(b, lab(pal::green, "b: " + near_to(s, "a"), 180).size(4.5));
+  f.add(c, lab(pal::orange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), -100).size(4.5));
   dr::save_both(f, plane(3), sphere(35, 60), out_dir() / "fig-4-15-three-infinite.svg");
 }
 
@@ -187,16 +184,16 @@ void fig_4_16() {
   const Sign s = t2::compare_distance(b, c, a);
   require(s < 0, "caption 4.16: b is the nearer");
   dr::Figure f;
-  f.segment(o, a, st(kGrey).width(1));
-  f.segment(o, b, st(kGrey).width(1));
-  f.segment(o, c, st(kGrey).width(1));
-  f.polyline(arc(0, 0, 0.7, theta(b), 0, 24), st(kGreen).width(2.2));
-  f.segment(c, a, st(kOrange).width(2.2));
-  f.segment(a, b, st(kGreen).width(3));  // along Ω: the arc of the angle aôb
-  f.add(o, lab(kDark, "o", -100).marker(dr::Marker::square));
-  f.add(a, lab(kBlack, "a", -30).size(4.5));
-  f.add(b, lab(kGreen, "b: " + near_to(s, "a"), -120).size(4.5));
-  f.add(c, lab(kOrange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), 125).size(4.5));
+  f.segment(o, a, st(pal::light_grey).width(1));
+  f.segment(o, b, st(pal::light_grey).width(1));
+  f.segment(o, c, st(pal::light_grey).width(1));
+  f.polyline(arc(0, 0, 0.7, theta(b), 0, 24), st(pal::green).width(2.2));
+  f.segment(c, a, st(pal::orange).width(2.2));
+  f.segment(a, b, st(pal::green).width(3));  // along Ω: the arc of the angle aôb
+  f.add(o, lab(pal::dark_grey, "o", -100).marker(dr::Marker::square));
+  f.add(a, lab(pal::black, "a", -30).size(4.5));
+  f.add(b, lab(pal::green, "b: " + near_to(s, "a"), -120).size(4.5));
+  f.add(c, lab(pal::orange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), 125).size(4.5));
   dr::save_both(f, plane(3), sphere(35, -60), out_dir() / "fig-4-16-two-infinite-one-proper.svg");
 }
 
@@ -209,11 +206,11 @@ void fig_4_17() {
     const char* colour;
     double a0, a1, am, an;  // label directions of p0, p1, the midpoint and the naive one
   } cases[] = {
-      {Point(1, -3, 0.5), Point(1, -1, 2.5), kBlue, 200, 0, -20, 0},
+      {Point(1, -3, 0.5), Point(1, -1, 2.5), pal::blue, 200, 0, -20, 0},
       // drawn at (-0.75, -0.5) (front) and (1, 0.5) (back)
-      {Point(1, -0.75, -0.5), Point(-1, -1, -0.5), kPurple, -90, -90, 20, 90},
+      {Point(1, -0.75, -0.5), Point(-1, -1, -0.5), pal::purple, -90, -90, 20, 90},
       // drawn at (1.25, -3.25) and (3.25, -1.25), both back
-      {Point(-1, -1.25, 3.25), Point(-1, -3.25, 1.25), kRed, 180, 0, -10, 170},
+      {Point(-1, -1.25, 3.25), Point(-1, -3.25, 1.25), pal::red, 180, 0, -10, 170},
   };
   dr::Figure f;
   int i = 0;
@@ -227,10 +224,10 @@ void fig_4_17() {
     f.add(k.p0, lab(k.colour, "p" + s + "₀", k.a0).size(4));
     f.add(k.p1, lab(k.colour, "p" + s + "₁", k.a1).size(4));
     auto where = [](const Point& x) { return x.w() > 0 ? "front" : (x.w() < 0 ? "back" : "on Ω"); };
-    f.add(m, lab(kBlack, "m" + s + " (" + where(m) + ")", k.am).marker(dr::Marker::diamond).size(5).layer(1));
+    f.add(m, lab(pal::black, "m" + s + " (" + where(m) + ")", k.am).marker(dr::Marker::diamond).size(5).layer(1));
     if (n != m) {
       require(!t2::on_segment(k.p0, k.p1, n), "a wrong naive midpoint is off the segment");
-      f.add(n, lab(kOrange, "n" + s + " (" + where(n) + ")", k.an).marker(dr::Marker::cross).size(5).layer(1));
+      f.add(n, lab(pal::orange, "n" + s + " (" + where(n) + ")", k.an).marker(dr::Marker::cross).size(5).layer(1));
     }
   }
   dr::save_both(f, plane(4), sphere(35, -150), out_dir() / "fig-4-17-midpoints.svg");
@@ -249,11 +246,11 @@ void fig_4_18() {
               t2::side(l, r3) == t2::ZERO && t2::side(l, r4) != t2::ZERO,
           "caption 4.18: r1 on the segment, r2 and r3 on the line only, r4 off the line");
   dr::Figure f;
-  f.add(l, st("#bbbbbb").width(1));
-  f.segment(p, q, st(kBlue).width(2.5));
-  f.add(p, lab(kBlue, "p", 120).size(4.5));
-  f.add(q, lab(kBlue, "q", -60).size(4.5));
-  f.add(t2::antipode(p), lab(kGrey, "d = ¬p", -80).marker(dr::Marker::square));
+  f.add(l, st(pal::pale_grey).width(1));
+  f.segment(p, q, st(pal::blue).width(2.5));
+  f.add(p, lab(pal::blue, "p", 120).size(4.5));
+  f.add(q, lab(pal::blue, "q", -60).size(4.5));
+  f.add(t2::antipode(p), lab(pal::light_grey, "d = ¬p", -80).marker(dr::Marker::square));
   const Point rs[] = {r1, r2, r3, r4};
   const double angles[] = {160, -60, 120, -90};
   for (int i = 0; i < 4; ++i) {
@@ -261,7 +258,7 @@ void fig_4_18() {
     const Sign s = t2::side(l, rs[i]);
     std::string text = "r" + std::to_string(i + 1) + (on ? " ∈ pq" : " ∉ pq");
     if (!on) text += s == 0 ? " (on the line)" : " (off the line)";
-    f.add(rs[i], lab(on ? kGreen : kRed, text, angles[i]).size(4));
+    f.add(rs[i], lab(on ? pal::green : pal::red, text, angles[i]).size(4));
   }
   dr::PlaneView v = plane(3.5);
   v.size = 420;
@@ -277,11 +274,11 @@ void fig_4_19() {
   const Point zero(0, 1, 0);
   require(ang.w() == 0 && t2::compare_angle(ang, zero) == t2::ZERO, "angle(p, q, r) with q on Omega is zero");
   dr::Figure f;
-  f.segment(p, q, st(kBlue).width(2.2));
-  f.segment(r, q, st(kGreen).width(2.2));
-  f.add(p, lab(kBlue, "p", 200).size(4.5));
-  f.add(r, lab(kGreen, "r", 200).size(4.5));
-  f.add(q, lab(kBlack, "q on Ω", -120).size(4.5));
+  f.segment(p, q, st(pal::blue).width(2.2));
+  f.segment(r, q, st(pal::green).width(2.2));
+  f.add(p, lab(pal::blue, "p", 200).size(4.5));
+  f.add(r, lab(pal::green, "r", 200).size(4.5));
+  f.add(q, lab(pal::black, "q on Ω", -120).size(4.5));
   f.title("angle(p, q, r) = [0, " + std::string(ang.x() > 0 ? "+" : "−") + ", 0]: the angle zero");
   dr::save_both(f, plane(3.5), sphere(35, 0), out_dir() / "fig-4-19-angle-at-omega.svg");
 }
@@ -297,14 +294,14 @@ void fig_4_20() {
               algorithm_1(p, q2) > 0 && t2::compare_angle(p, q2) < 0,
           "caption 4.20: Algorithm 1 right for q1, wrong for q2");
   dr::Figure f;
-  f.add(po, st(kBlue).width(1.5).arrow().shade().label("p ∨ o").label_angle(180));
-  f.polyline(arc(0, 0, 0.6, 0, theta(p), 24), st(kBlue).width(2.2));
-  f.add(o, lab(kDark, "o", -135).marker(dr::Marker::square));
-  f.add(d, lab(kBlack, "d: angle 0", 120).marker(dr::Marker::square));
-  f.add(p, lab(kBlue, "p", 150).size(4.5));
+  f.add(po, st(pal::blue).width(1.5).arrow().shade().label("p ∨ o").label_angle(180));
+  f.polyline(arc(0, 0, 0.6, 0, theta(p), 24), st(pal::blue).width(2.2));
+  f.add(o, lab(pal::dark_grey, "o", -135).marker(dr::Marker::square));
+  f.add(d, lab(pal::black, "d: angle 0", 120).marker(dr::Marker::square));
+  f.add(p, lab(pal::blue, "p", 150).size(4.5));
   const Point qs[] = {q1, q2};
   std::string title = "Algorithm 1:";
-  const char* colours[] = {kGreen, kRed};
+  const char* colours[] = {pal::green, pal::red};
   for (int i = 0; i < 2; ++i) {
     const Sign alg = algorithm_1(p, qs[i]);
     const Sign ok = t2::compare_angle(p, qs[i]);

@@ -24,15 +24,15 @@ void fig_4_1() {
   dr::Figure f;
   const Point a(1, -1.4, -1), b(1, 1.6, -0.6), c(1, 0.2, 1.5);
   const t2::Triangle t(a, b, c);
-  f.add(t, st(kBlue).width(2).fill(kBlue));
-  f.add(a, lab(kBlue, "a", -135));
-  f.add(b, lab(kBlue, "b", -45));
-  f.add(c, lab(kBlue, "c", 90));
+  f.add(t, st(pal::blue).width(2).fill(pal::blue));
+  f.add(a, lab(pal::blue, "a", -135));
+  f.add(b, lab(pal::blue, "b", -45));
+  f.add(c, lab(pal::blue, "c", 90));
   // A point and its antipode: the triangle of T² holds at most one of the two.
   const Point s(1, 0.1, 0);
-  f.add(s, lab(kGreen, std::string("s: ") + where(t2::bounded_side(t, s)), 135).size(3));
+  f.add(s, lab(pal::green, std::string("s: ") + where(t2::bounded_side(t, s)), 135).size(3));
   const Point ns = t2::antipode(s);
-  f.add(ns, lab(kRed, std::string("¬s: ") + where(t2::bounded_side(t, ns)), -45).size(3));
+  f.add(ns, lab(pal::red, std::string("¬s: ") + where(t2::bounded_side(t, ns)), -45).size(3));
   dr::save_both(f, plane(2.2), sphere(55, -60), out_dir() / "fig-4-1-triangle.svg");
 }
 
@@ -56,20 +56,20 @@ void label_corners(dr::Figure& f, const Point (&v)[4], const double (&angle)[4],
 void fig_4_2() {
   dr::Figure f;
   const t2::IsoRect r(Point(1, -1.2, -0.8), T1(1, 2.4), T1(1, 1.6));
-  f.add(r, st(kBlue).width(2).fill(kBlue));
+  f.add(r, st(pal::blue).width(2).fill(pal::blue));
   const Point v[4] = {r.corner(0), r.corner(1), r.corner(2), r.corner(3)};
-  label_corners(f, v, {-135, -45, 45, 135}, kBlue);
-  f.arrow(v[0], v[1], st(kGrey).width(1).label("Δx").label_angle(-90));
-  f.arrow(v[0], v[3], st(kGrey).width(1).label("Δy").label_angle(180));
+  label_corners(f, v, {-135, -45, 45, 135}, pal::blue);
+  f.arrow(v[0], v[1], st(pal::light_grey).width(1).label("Δx").label_angle(-90));
+  f.arrow(v[0], v[3], st(pal::light_grey).width(1).label("Δy").label_angle(180));
   dr::save_both(f, plane(2.2), sphere(55, -60), out_dir() / "fig-4-2-isorect.svg");
 }
 
 void fig_4_3() {
   dr::Figure f;
   const t2::IsoRect r(Point(1, -1.2, -0.8), T1::plus_infinity(), T1(1, 1.6));
-  f.add(r, st(kBlue).width(2).fill(kBlue));
+  f.add(r, st(pal::blue).width(2).fill(pal::blue));
   const Point v[4] = {r.corner(0), r.corner(1), r.corner(2), r.corner(3)};
-  label_corners(f, v, {-135, 180, 45, 135}, kBlue);
+  label_corners(f, v, {-135, 180, 45, 135}, pal::blue);
   dr::save_both(f, plane(2.2), sphere(55, -60), out_dir() / "fig-4-3-isorect-degenerate.svg");
 }
 
@@ -87,10 +87,10 @@ void fig_4_4() {
   // The corners the formulas of §4.1.7 would give, to show why: ab and dc cross on Ω.
   Point v[4] = {a, a, a, a};
   for (int i = 0; i < 4; ++i) v[i] = t2::detail::rect_vertex(a, dx, dy, i);
-  for (int i = 0; i < 4; ++i) f.segment(v[i], v[(i + 1) % 4], st(kRed).width(2));
-  label_corners(f, v, {-135, -45, 45, 135}, kRed);
+  for (int i = 0; i < 4; ++i) f.segment(v[i], v[(i + 1) % 4], st(pal::red).width(2));
+  label_corners(f, v, {-135, -45, 45, 135}, pal::red);
   const auto x = t2::intersection(t2::Segment(v[0], v[1]), t2::Segment(v[3], v[2]));
-  if (const auto* p = std::get_if<Point>(&x)) f.add(*p, lab("#000000", "ab ∩ dc", -150).marker(dr::Marker::cross).size(5));
+  if (const auto* p = std::get_if<Point>(&x)) f.add(*p, lab(pal::black, "ab ∩ dc", -150).marker(dr::Marker::cross).size(5));
   f.title(verdict);
   dr::save_both(f, plane(3), sphere(35, -55), out_dir() / "fig-4-4-isorect-undefined.svg");
 }
@@ -101,10 +101,10 @@ void fig_4_5() {
   dr::Figure f;
   const t2::BBox b1(Point(1, -1, 0), T1::plus_infinity(), T1(1, 1.8));   // x in [-1, +inf)
   const t2::BBox b2(Point(1, 1, -1.5), T1::minus_infinity(), T1(1, 2.5));  // x in (-inf, 1]
-  f.add(b1, st(kBlue).width(2).fill(kBlue));
-  f.add(b2, st(kOrange).width(2).fill(kOrange));
-  f.label(Point(1, 1.8, 1.2), "b₁", st(kBlue));
-  f.label(Point(1, -1.2, -0.9), "b₂", st(kOrange));
+  f.add(b1, st(pal::blue).width(2).fill(pal::blue));
+  f.add(b2, st(pal::orange).width(2).fill(pal::orange));
+  f.label(Point(1, 1.8, 1.2), "b₁", st(pal::blue));
+  f.label(Point(1, -1.2, -0.9), "b₂", st(pal::orange));
   std::string verdict;
   try {
     (void)(b1 + b2);
@@ -116,8 +116,8 @@ void fig_4_5() {
   const auto o1 = t2::omega_part(b1), o2 = t2::omega_part(b2);
   if (o1 && o2) {
     const bool anti = o1->source() == t2::antipode(o2->source());
-    f.add(o1->source(), lab(kBlue, "u", 90));
-    f.add(o2->source(), lab(kOrange, anti ? "¬u" : "v", 90));
+    f.add(o1->source(), lab(pal::blue, "u", 90));
+    f.add(o2->source(), lab(pal::orange, anti ? "¬u" : "v", 90));
   }
   f.title(verdict);
   dr::save_both(f, plane(4), sphere(60, -90), out_dir() / "fig-4-5-bbox-union-undefined.svg");
@@ -127,15 +127,15 @@ void fig_4_6() {
   dr::Figure f;
   const t2::BBox b1(Point(1, 1, -2.2), T1::minus_infinity(), T1(1, 1.6));   // front, x in (-inf, 1]
   const t2::BBox b2(Point(-1, 1, -0.6), T1::plus_infinity(), T1(1, 1.6));   // back, x in [-1, +inf)
-  f.add(b1, st(kBlue).width(2).fill(kBlue));
-  f.add(b2, st(kOrange).width(2).fill(kOrange));
-  f.label(Point(1, -2, -1.4), "b₁ (front)", st(kBlue));
-  f.label(Point(-1, -2.5, -1.4), "b₂ (back)", st(kOrange));
+  f.add(b1, st(pal::blue).width(2).fill(pal::blue));
+  f.add(b2, st(pal::orange).width(2).fill(pal::orange));
+  f.label(Point(1, -2, -1.4), "b₁ (front)", st(pal::blue));
+  f.label(Point(-1, -2.5, -1.4), "b₂ (back)", st(pal::orange));
   const auto x = t2::intersection(b1, b2);
   if (const auto* s = std::get_if<t2::Segment>(&x); s && s->is_degenerate()) {
-    f.add(s->source(), lab("#000000", "b₁ ∩ b₂ = " + t2::to_string(s->source()), 0).marker(dr::Marker::square).size(4));
+    f.add(s->source(), lab(pal::black, "b₁ ∩ b₂ = " + t2::to_string(s->source()), 0).marker(dr::Marker::square).size(4));
   } else if (s) {
-    f.add(*s, lab("#000000", "b₁ ∩ b₂", 0).width(3));
+    f.add(*s, lab(pal::black, "b₁ ∩ b₂", 0).width(3));
   } else if (std::holds_alternative<std::monostate>(x)) {
     f.title("b₁ ∩ b₂ is empty");
   } else {
@@ -165,15 +165,15 @@ void circle_cp(dr::Figure& f, const t2::Circle& c, const char* colour, const std
 void fig_4_7() {  // finite radius, front side
   dr::Figure f;
   const t2::Circle c1(Point(1, -1, 0.5), Point(1, -0.1, 0.5), t2::POSITIVE);
-  circle_cp(f, c1, kBlue, "c₁", "p₁", -90, 0);
+  circle_cp(f, c1, pal::blue, "c₁", "p₁", -90, 0);
   // The circle through three points: its centre is computed, its orientation is Δ(p, q, r).
   const Point p(1, 0.4, -0.6), q(1, 1.5, -1.3), r(1, 1.4, 0.1);
   const t2::Circle c2 = t2::circle_through(p, q, r);
-  f.add(c2, st(kOrange).width(2).fill(kOrange).arrow());
-  f.add(c2.center(), lab(kOrange, "c₂", -90).marker(dr::Marker::cross).size(4));
-  f.add(p, lab(kOrange, "p", 180));
-  f.add(q, lab(kOrange, "q", -90));
-  f.add(r, lab(kOrange, "r", 45));
+  f.add(c2, st(pal::orange).width(2).fill(pal::orange).arrow());
+  f.add(c2.center(), lab(pal::orange, "c₂", -90).marker(dr::Marker::cross).size(4));
+  f.add(p, lab(pal::orange, "p", 180));
+  f.add(q, lab(pal::orange, "q", -90));
+  f.add(r, lab(pal::orange, "r", 45));
   f.title(kinds({c1, c2}));
   dr::save_both(f, plane(2.5), sphere(80, -60), out_dir() / "fig-4-7-circles-finite-front.svg");
 }
@@ -181,15 +181,15 @@ void fig_4_7() {  // finite radius, front side
 void fig_4_8() {  // finite radius, back side
   dr::Figure f;
   const t2::Circle c1(Point(-1, 1, -0.5), Point(-1, 0.1, -0.5), t2::POSITIVE);
-  circle_cp(f, c1, kBlue, "c₁", "p₁", -90, 180);
+  circle_cp(f, c1, pal::blue, "c₁", "p₁", -90, 180);
   // The circle with diameter pq: its centre is the midpoint of p and q.
   const Point p(-1, -0.3, 0.5), q(-1, -1.7, 1.1);
   const t2::Circle c2 = t2::circle_from_diameter(p, q, t2::NEGATIVE);
-  f.add(c2, st(kOrange).width(2).fill(kOrange).arrow());
-  f.add(c2.center(), lab(kOrange, "c₂", -90).marker(dr::Marker::cross).size(4));
-  f.segment(p, q, st(kOrange).width(1));
-  f.add(p, lab(kOrange, "p", 0));
-  f.add(q, lab(kOrange, "q", 180));
+  f.add(c2, st(pal::orange).width(2).fill(pal::orange).arrow());
+  f.add(c2.center(), lab(pal::orange, "c₂", -90).marker(dr::Marker::cross).size(4));
+  f.segment(p, q, st(pal::orange).width(1));
+  f.add(p, lab(pal::orange, "p", 0));
+  f.add(q, lab(pal::orange, "q", 180));
   f.title(kinds({c1, c2}));
   dr::save_both(f, plane(2.5), sphere(-80, -60), out_dir() / "fig-4-8-circles-finite-back.svg");
 }
@@ -200,14 +200,14 @@ void fig_4_8() {  // finite radius, back side
 void beyond(double s, const std::string& out, double lat) {
   dr::Figure f;
   const t2::Circle c1(Point(-s, 0.3 * s, -0.1 * s), Point(s, 1.1 * s, 0.1 * s), t2::POSITIVE);
-  f.add(c1, st(kBlue).width(2).fill(kBlue).arrow());
+  f.add(c1, st(pal::blue).width(2).fill(pal::blue).arrow());
   const Point c = c1.center(), p = c1.boundary_point();
-  f.add(c, lab(kRed, s > 0 ? "c (back)" : "c (front)", -45).marker(dr::Marker::cross).size(4));
-  f.add(t2::antipode(c), lab(kBlue, "¬c", 135).size(3));
-  f.add(p, lab(kBlue, "p", 0));
+  f.add(c, lab(pal::red, s > 0 ? "c (back)" : "c (front)", -45).marker(dr::Marker::cross).size(4));
+  f.add(t2::antipode(c), lab(pal::blue, "¬c", 135).size(3));
+  f.add(p, lab(pal::blue, "p", 0));
   const Point x(s, 0.1 * s, -0.6 * s);
   const t2::Sign cmp = t2::compare_distance(x, p, c);
-  f.add(x, lab(kGreen, std::string("x: d(x, c) ") + (cmp > 0 ? ">" : cmp < 0 ? "<" : "=") + " d(p, c)", 90).size(3));
+  f.add(x, lab(pal::green, std::string("x: d(x, c) ") + (cmp > 0 ? ">" : cmp < 0 ? "<" : "=") + " d(p, c)", 90).size(3));
   f.title(kinds({c1}));
   dr::save_both(f, plane(2.5), sphere(lat, -60), out_dir() / out);
 }
@@ -219,16 +219,16 @@ void fig_4_11() {  // infinite radius
   // Two circles with the same centre at infinity and the same (infinite) radius: two lines.
   const Point c(0, 1, 0);
   const t2::Circle l1(c, Point(1, 1.2, 0.8)), l2(c, Point(1, -1.5, -0.8));
-  f.add(l1, st(kBlue).width(2).arrow());
-  f.add(l2, st(kOrange).width(2).arrow());
-  f.add(c, lab("#000000", "c", 180).marker(dr::Marker::cross).size(4));
-  f.add(l1.boundary_point(), lab(kBlue, "p₁", 0));
-  f.add(l2.boundary_point(), lab(kOrange, "p₂", 180));
+  f.add(l1, st(pal::blue).width(2).arrow());
+  f.add(l2, st(pal::orange).width(2).arrow());
+  f.add(c, lab(pal::black, "c", 180).marker(dr::Marker::cross).size(4));
+  f.add(l1.boundary_point(), lab(pal::blue, "p₁", 0));
+  f.add(l2.boundary_point(), lab(pal::orange, "p₂", 180));
   // A proper centre with its boundary point on Ω: the circle is Ω itself.
   const t2::Circle o(Point(1, 0.2, -0.9), Point(0, 1, 1));
-  f.add(o, st(kGreen).width(2).arrow());
-  f.add(o.center(), lab(kGreen, "c₃", -90).marker(dr::Marker::cross).size(4));
-  f.add(o.boundary_point(), lab(kGreen, "p₃", 45));
+  f.add(o, st(pal::green).width(2).arrow());
+  f.add(o.center(), lab(pal::green, "c₃", -90).marker(dr::Marker::cross).size(4));
+  f.add(o.boundary_point(), lab(pal::green, "p₃", 45));
   f.title(kinds({l1, l2, o}));
   dr::save_both(f, plane(2.5), sphere(30, -60), out_dir() / "fig-4-11-circles-infinite.svg");
 }

@@ -62,8 +62,8 @@ TEST(DrawView, AntipodesProjectToOppositePointsOfTheSphere) {
     const Point p = random_point(rng);
     const dr::Vec2 a = v.project(p), b = v.project(antipode(p));
     // Negation commutes with every rounding step, so the images are exactly opposite.
-    EXPECT_EQ(a.u, -b.u) << to_string(p);
-    EXPECT_EQ(a.v, -b.v) << to_string(p);
+    EXPECT_EQ(a.x, -b.x) << to_string(p);
+    EXPECT_EQ(a.y, -b.y) << to_string(p);
     const dr::Vec3 s = dr::on_sphere(p), t = dr::on_sphere(antipode(p));
     EXPECT_EQ(v.depth(s), -v.depth(t));
     // On the sphere, and in the direction of (x, y, w).
@@ -72,7 +72,7 @@ TEST(DrawView, AntipodesProjectToOppositePointsOfTheSphere) {
     EXPECT_NEAR(dot(of(s), d), 1, 1e-14);
     // Orthographic projection: what is not depth is on the picture.
     const V3 e = eye_of(v.lat, v.lon);
-    EXPECT_NEAR(a.u * a.u + a.v * a.v + dot(of(s), e) * dot(of(s), e), 1, 1e-12);
+    EXPECT_NEAR(a.x * a.x + a.y * a.y + dot(of(s), e) * dot(of(s), e), 1, 1e-12);
     EXPECT_NEAR(v.depth(s), dot(of(s), e), 1e-14);
   }
 }
@@ -84,7 +84,7 @@ TEST(DrawView, TheFrontSideIsTheUpperHemisphere) {
   EXPECT_LT(top.depth(dr::on_sphere(Point(-1, 3, -2))), 0);
   EXPECT_NEAR(top.depth(dr::on_sphere(Point(0, 3, -2))), 0, 1e-15);
   const dr::Vec2 q = top.project(Point(0, 3, -2));
-  EXPECT_NEAR(std::hypot(q.u, q.v), 1, 1e-14);
+  EXPECT_NEAR(std::hypot(q.x, q.y), 1, 1e-14);
 }
 
 TEST(DrawView, AGreatCircleProjectsToAnEllipseTangentToTheOutline) {
@@ -100,10 +100,10 @@ TEST(DrawView, AGreatCircleProjectsToAnEllipseTangentToTheOutline) {
     if (std::fabs(dot(nrm, e)) < 0.05 || std::fabs(dot(nrm, e)) > 0.999) continue;  // nearly edge-on or face-on
     ++checked;
     const dr::Ellipse el = dr::great_circle_ellipse(l, v);
-    EXPECT_NEAR(std::hypot(el.major.u, el.major.v), 1, 1e-12);
+    EXPECT_NEAR(std::hypot(el.major.x, el.major.y), 1, 1e-12);
     EXPECT_NEAR(el.minor, std::fabs(dot(nrm, e)), 1e-12);
     EXPECT_LE(el.minor, 1 + 1e-12);
-    const dr::Vec2 minor_dir{-el.major.v, el.major.u};
+    const dr::Vec2 minor_dir{-el.major.y, el.major.x};
     // Sample the great circle: the points s with s · n = 0 (an orthonormal basis of its plane).
     const V3 u1 = unit(cross(nrm, std::fabs(nrm.x) < 0.9 ? V3{1, 0, 0} : V3{0, 1, 0}));
     const V3 u2 = cross(nrm, u1);
@@ -113,9 +113,9 @@ TEST(DrawView, AGreatCircleProjectsToAnEllipseTangentToTheOutline) {
       const V3 s{std::cos(t) * u1.x + std::sin(t) * u2.x, std::cos(t) * u1.y + std::sin(t) * u2.y,
                  std::cos(t) * u1.z + std::sin(t) * u2.z};
       const dr::Vec2 P = v.project(dr::Vec3{s.x, s.y, s.z});
-      const double pu = P.u * el.major.u + P.v * el.major.v, pv = P.u * minor_dir.u + P.v * minor_dir.v;
+      const double pu = P.x * el.major.x + P.y * el.major.y, pv = P.x * minor_dir.x + P.y * minor_dir.y;
       EXPECT_NEAR(pu * pu + pv * pv / (el.minor * el.minor), 1, 1e-9) << "line " << to_string(a) << " v " << to_string(b);
-      most = std::max(most, std::hypot(P.u, P.v));
+      most = std::max(most, std::hypot(P.x, P.y));
     }
     EXPECT_LE(most, 1 + 1e-12);  // inside the outline ...
     // ... and touching it at the limb points, which project to ±major and lie on the circle.
@@ -125,8 +125,8 @@ TEST(DrawView, AGreatCircleProjectsToAnEllipseTangentToTheOutline) {
       EXPECT_NEAR(dot(of(s), nrm), 0, 1e-12);
       EXPECT_NEAR(dot(of(s), e), 0, 1e-12);
       const dr::Vec2 P = v.project(s);
-      EXPECT_NEAR(std::hypot(P.u, P.v), 1, 1e-12);
-      EXPECT_NEAR(std::fabs(P.u * el.major.u + P.v * el.major.v), 1, 1e-12);
+      EXPECT_NEAR(std::hypot(P.x, P.y), 1, 1e-12);
+      EXPECT_NEAR(std::fabs(P.x * el.major.x + P.y * el.major.y), 1, 1e-12);
     }
   }
   EXPECT_GT(checked, n / 2);
@@ -166,17 +166,17 @@ TEST(DrawView, APointAtInfinityLandsOnTheOmegaRingAtItsDirection) {
     const double x = c(rng), y = c(rng);
     if (x == 0 && y == 0) continue;
     const dr::Vec2 at = v.place(Point(0, x, y));
-    EXPECT_NEAR(std::hypot(at.u, at.v), dr::PlaneView::ring, 1e-12);
-    EXPECT_NEAR(at.u * y - at.v * x, 0, 1e-12 * std::hypot(x, y));  // parallel to (x, y) ...
-    EXPECT_GT(at.u * x + at.v * y, 0);                              // ... and the same way
+    EXPECT_NEAR(std::hypot(at.x, at.y), dr::PlaneView::ring, 1e-12);
+    EXPECT_NEAR(at.x * y - at.y * x, 0, 1e-12 * std::hypot(x, y));  // parallel to (x, y) ...
+    EXPECT_GT(at.x * x + at.y * y, 0);                              // ... and the same way
     // A proper point and its antipode land on the same spot of the plane.
     const Point p(c(rng) == 0 ? 1 : c(rng), x, y);
     if (p.w() == 0) continue;
     const dr::Vec2 a = v.place(p), b = v.place(antipode(p));
-    EXPECT_NEAR(a.u, (x / p.w() - v.cx) / v.half_width, 1e-12 * (1 + std::fabs(a.u)));
-    EXPECT_NEAR(a.v, (y / p.w() - v.cy) / v.half_width, 1e-12 * (1 + std::fabs(a.v)));
-    EXPECT_EQ(a.u, b.u);
-    EXPECT_EQ(a.v, b.v);
+    EXPECT_NEAR(a.x, (x / p.w() - v.cx) / v.half_width, 1e-12 * (1 + std::fabs(a.x)));
+    EXPECT_NEAR(a.y, (y / p.w() - v.cy) / v.half_width, 1e-12 * (1 + std::fabs(a.y)));
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
   }
 }
 

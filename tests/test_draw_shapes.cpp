@@ -26,10 +26,10 @@ const char* const kInk = "#123456";  // the colour of the item under test
 struct PlaneMap {
   dr::PlaneView v;
   double scale() const { return v.size / 2.0 / 1.2 / v.half_width; }  // pixels per model unit
-  dr::Pixel px(double x, double y) const {
+  dr::Vec2 px(double x, double y) const {
     return {v.size / 2.0 + scale() * (x - v.cx), v.size / 2.0 - scale() * (y - v.cy)};
   }
-  std::pair<double, double> xy(const dr::Pixel& p) const {
+  std::pair<double, double> xy(const dr::Vec2& p) const {
     return {v.cx + (p.x - v.size / 2.0) / scale(), v.cy - (p.y - v.size / 2.0) / scale()};
   }
 };
@@ -38,7 +38,7 @@ struct SphereMap {
   double scale() const { return v.size / 2.0 / 1.15; }
   // The point of the unit sphere drawn at pixel p, on the visible (front = true) or the hidden
   // hemisphere; nullopt outside the outline.
-  std::optional<dr::Vec3> unproject(const dr::Pixel& p, bool visible) const {
+  std::optional<dr::Vec3> unproject(const dr::Vec2& p, bool visible) const {
     const double u = (p.x - v.size / 2.0) / scale(), w = -(p.y - v.size / 2.0) / scale();
     const double d2 = 1 - u * u - w * w;
     if (d2 < -1e-9) return std::nullopt;
@@ -63,7 +63,7 @@ std::vector<dr::Shape> fills(const std::vector<dr::Shape>& list, const std::stri
 }
 
 // Even-odd point in polygon (the polygons here are simple).
-bool inside(const std::vector<dr::Pixel>& poly, double x, double y) {
+bool inside(const std::vector<dr::Vec2>& poly, double x, double y) {
   bool in = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
     const auto &a = poly[i], &b = poly[j];
@@ -208,7 +208,7 @@ void expect_fill_matches(const Triangle& t) {
   pm.v.half_width = 5;
   const auto list = dr::display_list(f, pm.v);
   const auto edges = strokes(list, kInk), areas = fills(list, kInk);
-  std::vector<dr::Pixel> front, back;
+  std::vector<dr::Vec2> front, back;
   for (const auto& a : areas) (a.part == dr::Part::front ? front : back) = a.pts;
   int checked = 0;
   for (double py = 2; py < pm.v.size; py += 7)

@@ -18,12 +18,6 @@ namespace {
 
 namespace dr = t2::draw;
 
-const char* const kPointColour = "#000000";
-const char* const kSegmentColour = "#1f77b4";
-const char* const kPolygonColour = "#2ca02c";
-const char* const kLineColour = "#7f7f7f";
-const char* const kCircleColour = "#d62728";
-
 enum class Model { plane, sphere, both };
 
 Model parse_model(const std::string& s) {
@@ -86,26 +80,6 @@ dr::PlaneView fit_plane(const t2::Scene& s) {
   return v;
 }
 
-dr::Figure figure_of(const t2::Scene& s) {
-  dr::Figure f;
-  for (const auto& g : s.polygons) {
-    std::vector<t2::Point> v;
-    for (const auto& p : g.vertices) v.push_back(p.point);
-    f.add(v, dr::Style().color(kPolygonColour).width(2).fill(kPolygonColour).layer(0));
-  }
-  for (const auto& g : s.circles) {
-    try {
-      f.add(g.circle(), dr::Style().color(kCircleColour).width(2).layer(0));
-    } catch (const t2::BadInput& e) {  // a circle too large for double coordinates
-      throw t2::ParseError(s.name, g.line, e.what());
-    }
-  }
-  for (const auto& g : s.lines) f.add(g.join(), dr::Style().color(kLineColour).width(1.5).arrow().layer(0));
-  for (const auto& g : s.segments) f.segment(g.a.point, g.b.point, dr::Style().color(kSegmentColour).width(2).layer(1));
-  for (const auto& p : s.points) f.add(p.point, dr::Style().color(kPointColour).label(p.label).layer(2));
-  return f;
-}
-
 int run(Args args) {
   std::optional<std::string> file, output, format_name;
   Model model = Model::both;
@@ -141,7 +115,7 @@ int run(Args args) {
   // The format first: a bad extension must not cost a parse, and must not leave a file.
   const dr::Format fmt = format_name ? parse_format(*format_name) : dr::format_of(*output);
   const t2::Scene scene = t2::read_scene(*file);  // ParseError: file:line: message, exit 2
-  const dr::Figure fig = figure_of(scene);
+  const dr::Figure fig = dr::figure_of(scene);
   const dr::PlaneView plane = fit_plane(scene);
   std::string bytes;
   switch (model) {

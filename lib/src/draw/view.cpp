@@ -10,19 +10,9 @@ namespace t2::draw {
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180;
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Vec3 unit(const Vec3& a) {
-  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
-  const Vec3 s{a.x / m, a.y / m, a.z / m};
-  const double n = std::sqrt(dot(s, s));
-  return {s.x / n, s.y / n, s.z / n};
-}
 }  // namespace
 
-Vec3 on_sphere(const Point& p) { return unit({p.x(), p.y(), p.w()}); }
+Vec3 on_sphere(const Point& p) { return unit_scaled({p.x(), p.y(), p.w()}); }
 
 Vec2 PlaneView::to_unit(double x, double y) const { return {(x - cx) / half_width, (y - cy) / half_width}; }
 
@@ -57,20 +47,20 @@ Vec2 SphereView::project(const Vec3& s) const {
 double SphereView::depth(const Vec3& s) const { return dot(s, eye()); }
 
 std::optional<std::pair<Vec3, Vec3>> limb_points(const Line& l, const SphereView& v) {
-  const Vec3 n = unit({l.X(), l.Y(), l.W()});
+  const Vec3 n = unit_scaled({l.X(), l.Y(), l.W()});
   const Vec3 m = cross(n, v.eye());
   if (dot(m, m) == 0) return std::nullopt;
-  const Vec3 a = unit(m);
-  return std::pair{a, Vec3{-a.x, -a.y, -a.z}};
+  const Vec3 a = unit_scaled(m);
+  return std::pair{a, -a};
 }
 
 Ellipse great_circle_ellipse(const Line& l, const SphereView& v) {
-  const Vec3 n = unit({l.X(), l.Y(), l.W()});
+  const Vec3 n = unit_scaled({l.X(), l.Y(), l.W()});
   const auto lp = limb_points(l, v);
   if (!lp) return {{1, 0}, 1};  // the circle is the limb: the outline itself
   const Vec2 a = v.project(lp->first);
-  const double m = std::hypot(a.u, a.v);
-  return {{a.u / m, a.v / m}, std::fabs(dot(n, v.eye()))};
+  const double m = norm(a);
+  return {{a.x / m, a.y / m}, std::fabs(dot(n, v.eye()))};
 }
 
 std::vector<ArcPiece> split_at_limb(const Point& p, const Point& q, const SphereView& v) {
@@ -79,8 +69,7 @@ std::vector<ArcPiece> split_at_limb(const Point& p, const Point& q, const Sphere
   const double da = v.depth(a), db = v.depth(b);
   if ((da > 0 && db < 0) || (da < 0 && db > 0)) {
     // The point |db|·a + |da|·b lies on the arc (positive combination) and has depth 0.
-    const Vec3 c = unit({std::fabs(db) * a.x + std::fabs(da) * b.x, std::fabs(db) * a.y + std::fabs(da) * b.y,
-                         std::fabs(db) * a.z + std::fabs(da) * b.z});
+    const Vec3 c = unit_scaled(std::fabs(db) * a + std::fabs(da) * b);
     return {{a, c, da > 0}, {c, b, db > 0}};
   }
   return {{a, b, da > 0 || db > 0 || (da == 0 && db == 0)}};

@@ -26,12 +26,6 @@ enum class Part {
   decoration,  ///< outline, Ω ring, graticule, axes, labels, title
 };
 
-/// A point of the picture in pixels (x to the right, y down).
-struct Pixel {
-  double x = 0;  ///< from the left edge
-  double y = 0;  ///< from the top edge
-};
-
 /// What a shape is.
 enum class ShapeKind {
   path,    ///< a polyline through `pts` (closed when `closed`), stroked and/or filled
@@ -44,7 +38,7 @@ struct Shape {
   ShapeKind kind = ShapeKind::path;  ///< what to draw
   Part part = Part::front;           ///< which part of T² it shows
   bool hidden = false;               ///< on the far hemisphere of the sphere (dashed, faded)
-  std::vector<Pixel> pts;            ///< geometry in pixels
+  std::vector<Vec2> pts;             ///< geometry in pixels (x to the right, y down)
   bool closed = false;               ///< a closed path
   std::string stroke;                ///< stroke colour, empty = none
   double width = 1;                  ///< stroke width, pixels

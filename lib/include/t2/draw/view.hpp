@@ -19,23 +19,11 @@
 #include <utility>
 #include <vector>
 
+#include "t2/draw/vec.hpp"
 #include "t2/line.hpp"
 #include "t2/point.hpp"
 
 namespace t2::draw {
-
-/// A vector of space (the spherical model): (x, y, w) coordinates of a point of T².
-struct Vec3 {
-  double x = 0;  ///< first coordinate (the x of [w, x, y])
-  double y = 0;  ///< second coordinate (the y of [w, x, y])
-  double z = 0;  ///< third coordinate (the w of [w, x, y]: up is the front side)
-};
-
-/// A point of the picture plane: (u to the right, v up), in model units.
-struct Vec2 {
-  double u = 0;  ///< horizontal coordinate, to the right
-  double v = 0;  ///< vertical coordinate, up
-};
 
 /// The unit vector of space representing p on the sphere: (x, y, w) / |(x, y, w)|.
 Vec3 on_sphere(const Point& p);
