@@ -3,6 +3,7 @@
 /// @brief Andrew's monotone chain in a chart of T², and the Akl–Toussaint throw-away.
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -108,23 +109,42 @@ std::vector<std::size_t> akl_toussaint(std::span<const Point> P, const Chart& ch
       if (K::orient(Q[k], Q[(k + 1) % Q.size()], p) <= 0) return false;
     return true;
   };
-  // The box: within the vertices extreme in x (left: −x and the two left diagonals; and so on),
-  // shrunk a little at a time until its four corners pass.
+  // The box, two candidates, each shrunk a little at a time until its four corners pass: the
+  // one within the vertices extreme in x and y (left: −x and the two left diagonals; and so
+  // on), good for a square; and the square in the largest circle inside Q around the median of a
+  // sample of the points, good for heavy tails. Each is computed in doubles and kept only if verified.
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
   bool box = false;
   if (plain && Q.size() >= 3) {
+    const auto verified = [&](double a0, double a1, double b0, double b1, double& area) {
+      for (double f = 1.0 / 256; f < 0.5 && a0 < a1 && b0 < b1; f *= 2) {
+        if (inside(Point::cartesian(a0, b0)) && inside(Point::cartesian(a1, b0)) && inside(Point::cartesian(a1, b1)) &&
+            inside(Point::cartesian(a0, b1))) {
+          area = (a1 - a0) * (b1 - b0);
+          if (!box || area > (x1 - x0) * (y1 - y0)) x0 = a0, x1 = a1, y0 = b0, y1 = b1, box = true;
+          return;
+        }
+        const double dx = f * (a1 - a0), dy = f * (b1 - b0);
+        a0 += dx, a1 -= dx, b0 += dy, b1 -= dy;
+      }
+    };
+    double area = 0;
     const auto X = [&](int k) { return P[e[static_cast<std::size_t>(k)]].x(); };
     const auto Y = [&](int k) { return P[e[static_cast<std::size_t>(k)]].y(); };
-    x0 = std::max({X(7), X(0), X(1)}), x1 = std::min({X(3), X(4), X(5)});
-    y0 = std::max({Y(1), Y(2), Y(3)}), y1 = std::min({Y(5), Y(6), Y(7)});
-    for (double f = 1.0 / 256; f < 0.5 && !box && x0 < x1 && y0 < y1; f *= 2) {
-      box = inside(Point::cartesian(x0, y0)) && inside(Point::cartesian(x1, y0)) && inside(Point::cartesian(x1, y1)) &&
-            inside(Point::cartesian(x0, y1));
-      if (!box) {
-        const double dx = f * (x1 - x0), dy = f * (y1 - y0);
-        x0 += dx, x1 -= dx, y0 += dy, y1 -= dy;
-      }
+    verified(std::max({X(7), X(0), X(1)}), std::min({X(3), X(4), X(5)}), std::max({Y(1), Y(2), Y(3)}),
+             std::min({Y(5), Y(6), Y(7)}), area);
+    std::vector<double> sx, sy;  // the centre: the median of a sample of the points
+    for (std::size_t i = 0; i < P.size(); i += std::max<std::size_t>(1, P.size() / 63)) sx.push_back(P[i].x()), sy.push_back(P[i].y());
+    std::nth_element(sx.begin(), sx.begin() + static_cast<std::ptrdiff_t>(sx.size() / 2), sx.end());
+    std::nth_element(sy.begin(), sy.begin() + static_cast<std::ptrdiff_t>(sy.size() / 2), sy.end());
+    const double cx = sx[sx.size() / 2], cy = sy[sy.size() / 2];
+    double r = 1e308;  // the distance from (cx, cy) to the nearest edge line of Q
+    for (std::size_t k = 0; k < Q.size(); ++k) {
+      const Point &a = Q[k], &b = Q[(k + 1) % Q.size()];
+      const double ex = b.x() - a.x(), ey = b.y() - a.y(), len = std::hypot(ex, ey);
+      if (len > 0) r = std::min(r, std::fabs(ex * (cy - a.y()) - ey * (cx - a.x())) / len);
     }
+    if (std::isfinite(r)) verified(cx - r * 0.7, cx + r * 0.7, cy - r * 0.7, cy + r * 0.7, area);
   }
   keep.reserve(P.size() / 8);
   for (std::size_t i = 0; i < P.size(); ++i) {
