@@ -467,5 +467,29 @@ TEST(Scene, CorpusAndExamplesParseOrFailCleanly) {
   EXPECT_GE(files, 10);
 }
 
+// The table of block kinds (scene.cpp): every keyword it lists opens a block whose size is
+// checked at its 'end', and the messages that list the keywords list exactly the table's.
+TEST(Scene, BlockKindsComeFromOneTable) {
+  const auto kinds = scene_block_keywords();
+  EXPECT_EQ(kinds, (std::vector<std::string_view>{"segment", "polygon", "line", "circle"}));
+  std::string listed;
+  for (auto k : kinds) {
+    listed += std::string(k) + ", ";
+    // One point is too few for every kind: the error is at the line of 'end'.
+    const ParseError e = error_of("# a block\n" + std::string(k) + "\n1 2\nend\n");
+    EXPECT_EQ(e.file(), "f.t2");
+    EXPECT_EQ(e.line(), 4) << e.what();
+    EXPECT_TRUE(e.message().starts_with("a " + std::string(k) + " has ")) << e.what();
+    EXPECT_TRUE(e.message().ends_with(", this one has 1")) << e.what();
+  }
+  // An unknown kind is refused with file:line, and the message lists every kind of the table.
+  const ParseError u = error_of("1 2\n\nhexagon\n1 2\nend\n");
+  EXPECT_EQ(u.line(), 3) << u.what();
+  EXPECT_EQ(u.message(), "unknown keyword 'hexagon' (the keywords are label, " + listed + "end)");
+  EXPECT_EQ(std::string(u.what()), "f.t2:3: " + u.message());
+  const ParseError end = error_of("end\n");
+  EXPECT_EQ(end.message(), "'end' without an open block (segment, polygon, line or circle)");
+}
+
 }  // namespace
 }  // namespace t2

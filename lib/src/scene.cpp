@@ -32,15 +32,6 @@ const ScenePoint* Scene::find(std::string_view label) const {
 
 namespace {
 
-constexpr std::string_view kKeywords[] = {"label", "segment", "polygon", "line", "circle", "end"};
-constexpr std::string_view kBlocks[] = {"segment", "polygon", "line", "circle"};
-
-bool is_keyword(std::string_view w) {
-  for (auto k : kKeywords)
-    if (w == k) return true;
-  return false;
-}
-
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -89,9 +80,92 @@ std::vector<std::string_view> split(std::string_view s) {
   return words;
 }
 
-// An open block: `kind` is one of kBlocks.
+// ---------------------------------------------------------------- block kinds
+// Each kind of block is one row of kBlockKinds: its keyword, how many points it holds, and the
+// builder that checks the block is defined and adds it to the scene. Adding a kind of block
+// is adding a member to Scene, a builder and a row here (and its drawing, in
+// t2/draw/scene_figure.cpp); the parser and its messages follow the table.
+
+void check_edge(const Scene& s, const ScenePoint& p, const ScenePoint& q, int line, const std::string& what) {
+  if (q.point == antipode(p.point))
+    throw ParseError(s.name, line,
+                     fmt::format("{}: segment(p, q) is undefined when q = antipode(p); here p = {} "
+                                 "(line {}) and q = {} (line {})",
+                                 what, to_string(p.point), p.line, to_string(q.point), q.line));
+}
+
+// The builders: `v` holds as many points as the row says; `line` is the line of the block's
+// keyword, `end` the line of its 'end'.
+void build_segment(Scene& s, std::vector<ScenePoint>&& v, int line, int /*end*/) {
+  check_edge(s, v[0], v[1], v[1].line, "segment");
+  s.segments.push_back(SceneSegment{v[0], v[1], line});
+}
+
+void build_polygon(Scene& s, std::vector<ScenePoint>&& v, int line, int end) {
+  const std::size_t n = v.size();
+  for (std::size_t i = 1; i < n; ++i)
+    check_edge(s, v[i - 1], v[i], v[i].line, fmt::format("polygon edge {}-{}", i, i + 1));
+  check_edge(s, v[n - 1], v[0], end, fmt::format("closing polygon edge {}-1", n));
+  s.polygons.push_back(ScenePolygon{std::move(v), line});
+}
+
+void build_line(Scene& s, std::vector<ScenePoint>&& v, int line, int /*end*/) {
+  const ScenePoint &p = v[0], &q = v[1];
+  if (q.point == p.point || q.point == antipode(p.point))
+    throw ParseError(s.name, q.line,
+                     fmt::format("line: join(p, q) is undefined when q = p or q = antipode(p); here p = {} "
+                                 "(line {}) and q = {} (line {})",
+                                 to_string(p.point), p.line, to_string(q.point), q.line));
+  s.lines.push_back(SceneLine{p, q, line});
+}
+
+void build_circle(Scene& s, std::vector<ScenePoint>&& v, int line, int /*end*/) {
+  const ScenePoint &c = v[0], &p = v[1];
+  if (c.point.w() == 0 && p.point.w() == 0)
+    throw ParseError(s.name, p.line,
+                     fmt::format("circle: undefined when both the centre {} (line {}) and the point {} "
+                                 "(line {}) are at infinity",
+                                 to_string(c.point), c.line, to_string(p.point), p.line));
+  s.circles.push_back(SceneCircle{c, p, line});
+}
+
+struct BlockKind {
+  std::string_view keyword;  // the word that opens the block
+  std::size_t points;        // how many points it holds: exactly, or at least when at_least
+  bool at_least;
+  std::string_view noun;     // what its points are called in messages
+  void (*build)(Scene&, std::vector<ScenePoint>&&, int line, int end);
+};
+
+constexpr BlockKind kBlockKinds[] = {
+    {"segment", 2, false, "points", build_segment},
+    {"polygon", 3, true, "vertices", build_polygon},
+    {"line", 2, false, "points", build_line},
+    {"circle", 2, false, "points", build_circle},
+};
+
+const BlockKind* find_block(std::string_view word) {
+  for (const auto& k : kBlockKinds)
+    if (word == k.keyword) return &k;
+  return nullptr;
+}
+
+bool is_keyword(std::string_view w) { return w == "label" || w == "end" || find_block(w) != nullptr; }
+
+// The block keywords as a list: "segment, polygon, line" then `last` then "circle".
+std::string block_list(std::string_view last) {
+  std::string s;
+  const std::size_t n = std::size(kBlockKinds);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i > 0) s += i + 1 == n ? last : ", ";
+    s += kBlockKinds[i].keyword;
+  }
+  return s;
+}
+
+// An open block.
 struct Block {
-  std::string_view kind;
+  const BlockKind* kind = nullptr;
   int line = 0;
   std::vector<ScenePoint> points;
 };
@@ -116,7 +190,7 @@ class Parser {
     }
     if (block_)
       throw ParseError(scene_.name, block_->line,
-                       fmt::format("'{}' block is not closed: 'end' is missing", block_->kind));
+                       fmt::format("'{}' block is not closed: 'end' is missing", block_->kind->keyword));
     return std::move(scene_);
   }
 
@@ -131,23 +205,23 @@ class Parser {
 
   void handle(const std::vector<std::string_view>& w) {
     const std::string_view first = w[0];
-    if (std::find(std::begin(kBlocks), std::end(kBlocks), first) != std::end(kBlocks)) {
+    if (const BlockKind* kind = find_block(first)) {
       no_more(w);
       if (block_)
         fail(fmt::format("'{}' inside the '{}' block opened on line {} ('end' missing?)", first,
-                         block_->kind, block_->line));
+                         block_->kind->keyword, block_->line));
       block_.emplace();
-      block_->kind = *std::find(std::begin(kBlocks), std::end(kBlocks), first);
+      block_->kind = kind;
       block_->line = line_;
     } else if (first == "end") {
       no_more(w);
-      if (!block_) fail("'end' without an open block (segment, polygon, line or circle)");
+      if (!block_) fail(fmt::format("'end' without an open block ({})", block_list(" or ")));
       close_block();
     } else if (first == "label") {
       if (block_)
         fail(fmt::format("'label' inside the '{}' block opened on line {}: label the point before "
                          "the block, then write its name in the block",
-                         block_->kind, block_->line));
+                         block_->kind->keyword, block_->line));
       if (w.size() < 2) fail("'label' needs a name and a point: label NAME x y, or label NAME w x y");
       if (!is_name(w[1]))
         fail(fmt::format("{} is not a label name: use letters, digits, _ and ', starting with a "
@@ -169,7 +243,8 @@ class Parser {
       const ScenePoint& p = scene_.points[found->second];
       block_->points.push_back(ScenePoint{p.point, line_, p.label});
     } else if (is_letter(first[0]) && !is_non_finite_number(first)) {
-      if (!block_) fail(fmt::format("unknown keyword {} (the keywords are label, segment, polygon, line, circle, end)", quote(first)));
+      if (!block_)
+        fail(fmt::format("unknown keyword {} (the keywords are label, {}, end)", quote(first), block_list(", ")));
       fail(fmt::format("{} is neither a keyword nor a label defined above", quote(first)));
     } else {
       ScenePoint p = point(w);
@@ -208,50 +283,15 @@ class Parser {
     return ScenePoint{Point(c[0], c[1], c[2]), line_, {}};
   }
 
-  void check_edge(const ScenePoint& p, const ScenePoint& q, int line, const char* what) const {
-    if (q.point == antipode(p.point))
-      throw ParseError(scene_.name, line,
-                       fmt::format("{}: segment(p, q) is undefined when q = antipode(p); here p = {} "
-                                   "(line {}) and q = {} (line {})",
-                                   what, to_string(p.point), p.line, to_string(q.point), q.line));
-  }
-
   void close_block() {
     Block b = std::move(*block_);
     block_.reset();
+    const BlockKind& k = *b.kind;
     const std::size_t n = b.points.size();
-    if (b.kind != "polygon" && n != 2) fail(fmt::format("a {} has exactly 2 points, this one has {}", b.kind, n));
-    if (b.kind == "segment") {
-      check_edge(b.points[0], b.points[1], b.points[1].line, "segment");
-      scene_.segments.push_back(SceneSegment{b.points[0], b.points[1], b.line});
-      return;
-    }
-    if (b.kind == "line") {
-      const ScenePoint &p = b.points[0], &q = b.points[1];
-      if (q.point == p.point || q.point == antipode(p.point))
-        throw ParseError(scene_.name, q.line,
-                         fmt::format("line: join(p, q) is undefined when q = p or q = antipode(p); here p = {} "
-                                     "(line {}) and q = {} (line {})",
-                                     to_string(p.point), p.line, to_string(q.point), q.line));
-      scene_.lines.push_back(SceneLine{p, q, b.line});
-      return;
-    }
-    if (b.kind == "circle") {
-      const ScenePoint &c = b.points[0], &p = b.points[1];
-      if (c.point.w() == 0 && p.point.w() == 0)
-        throw ParseError(scene_.name, p.line,
-                         fmt::format("circle: undefined when both the centre {} (line {}) and the point {} "
-                                     "(line {}) are at infinity",
-                                     to_string(c.point), c.line, to_string(p.point), p.line));
-      scene_.circles.push_back(SceneCircle{c, p, b.line});
-      return;
-    }
-    if (n < 3) fail(fmt::format("a polygon has at least 3 vertices, this one has {}", n));
-    for (std::size_t i = 1; i < n; ++i)
-      check_edge(b.points[i - 1], b.points[i], b.points[i].line,
-                 fmt::format("polygon edge {}-{}", i, i + 1).c_str());
-    check_edge(b.points[n - 1], b.points[0], line_, fmt::format("closing polygon edge {}-1", n).c_str());
-    scene_.polygons.push_back(ScenePolygon{std::move(b.points), b.line});
+    if (k.at_least ? n < k.points : n != k.points)
+      fail(fmt::format("a {} has {} {} {}, this one has {}", k.keyword, k.at_least ? "at least" : "exactly", k.points,
+                       k.noun, n));
+    k.build(scene_, std::move(b.points), b.line, line_);
   }
 
   std::string_view text_;
@@ -262,6 +302,12 @@ class Parser {
 };
 
 }  // namespace
+
+std::vector<std::string_view> scene_block_keywords() {
+  std::vector<std::string_view> v;
+  for (const auto& k : kBlockKinds) v.push_back(k.keyword);
+  return v;
+}
 
 Scene parse_scene(std::string_view text, std::string name) { return Parser(text, std::move(name)).run(); }
 

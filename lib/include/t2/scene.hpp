@@ -126,6 +126,11 @@ struct Scene {
   const ScenePoint* find(std::string_view label) const;
 };
 
+/// The keywords that open a block of a scene file (segment, polygon, line, circle), in the
+/// order of the parser's table of block kinds (lib/src/scene.cpp: one row per kind, with how
+/// many points it holds and the builder that checks and adds it).
+std::vector<std::string_view> scene_block_keywords();
+
 /// Parses the text of a scene file; `name` is used in error messages (`name:line: ...`).
 /// Throws `ParseError` on the first error.
 Scene parse_scene(std::string_view text, std::string name);
