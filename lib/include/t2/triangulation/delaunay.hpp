@@ -39,6 +39,20 @@
 ///    their order, so the triangle set is the same for every permutation of the input, and it
 ///    is the one CGAL's `Delaunay_triangulation_2` computes (the tests compare them).
 ///
+/// **T² input: not implemented yet.** Only front points (w > 0) are accepted; any point on the
+/// back side or on Ω throws `Undefined`. Seed 000 §5.3 extends the insertion to T²: while all
+/// points lie in an open hemisphere the hull exists and the structure above works unchanged
+/// (orient is exact on homogeneous points); when an insertion destroys the hull, the new point
+/// takes the place of v∞ in every infinite triangle and the triangulation covers the sphere;
+/// inserting the antipode of a hull vertex creates a segment between antipodes (the seed's
+/// figure 5.18). None of this is here: it needs the empty-circle criterion for triangles with
+/// vertices on both sides or on Ω (chapter 10 must define it so that the triangulation is dual
+/// to the Voronoi diagram of chapter 11), since `in_circle` is undefined for such triangles.
+///
+/// **Memory.** While building: a copy of the points in insertion order (24 bytes a point), the
+/// order itself (4), the triangles (2 per point, 24 bytes each: 48), reserved exactly once. The
+/// result holds the points (24) and the triangles (48): 72 bytes per point.
+///
 /// **Kernel.** `delaunay_with<K>` takes the predicates from a kernel type K (orient, in_circle,
 /// compare_xy on `t2::Point`) and calls its trace hooks (inserted, flipped); the default
 /// `DelaunayKernel` calls the exact `t2::orient`, `t2::in_circle` and `t2::compare_xy` and
@@ -146,11 +160,14 @@ void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>
 //> delaunay
 /// The Delaunay triangulation of front points (w > 0) with the predicates of kernel K; see the
 /// file comment for the algorithm and the rule on degenerate input. Throws `Undefined` for a
-/// point that is not on the front side.
+/// point that is not on the front side, `BadInput` for more than 715 827 882 points (32-bit
+/// half-edge indices).
 template <class K = DelaunayKernel>
 Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   using Index = Triangulation::Index;
   detail::require_front(input);
+  if (input.size() > Triangulation::none / 6)  // half-edges 3t + i of 2n triangles fit 32 bits
+    throw BadInput("delaunay: more than " + std::to_string(Triangulation::none / 6) + " points");
   // The triangulation is built on a copy of the points in insertion order (vertex m is the m-th
   // inserted point), so that the walk and the flips touch memory in order; `renumber` restores
   // the input indices and points at the end.
