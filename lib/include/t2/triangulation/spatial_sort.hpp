@@ -33,27 +33,31 @@ struct SortKey {
   std::uint32_t index;  ///< the input index
 };
 
+/// The median of [b, e) in coordinate `coord`, ascending if `up`: nth_element, returns the middle.
+template <int coord, bool up>
+SortKey* hilbert_split(SortKey* b, SortKey* e) {
+  if (b >= e) return b;
+  SortKey* m = b + (e - b) / 2;
+  std::nth_element(b, m, e, [](const SortKey& p, const SortKey& q) {
+    return up ? p.c[coord] < q.c[coord] : p.c[coord] > q.c[coord];
+  });
+  return m;
+}
+
 /// Sorts [begin, end) along a Hilbert curve whose first split is on coordinate `x` in
-/// direction `up_x`, the second on the other coordinate in direction `up_y`.
-inline void hilbert_sort(SortKey* begin, SortKey* end, int x, bool up_x, bool up_y) {
+/// direction `up_x`, the second on the other coordinate in direction `up_y` (CGAL's
+/// Hilbert_sort_median_2, with the directions as template arguments).
+template <int x, bool up_x, bool up_y>
+void hilbert_sort(SortKey* begin, SortKey* end) {
+  constexpr int y = 1 - x;
   if (end - begin <= 4) return;  // CGAL's threshold: tiny runs stay in random order
-  const int y = 1 - x;
-  auto split = [](SortKey* b, SortKey* e, int coord, bool up) {
-    if (b >= e) return b;
-    SortKey* m = b + (e - b) / 2;
-    if (up)
-      std::nth_element(b, m, e, [coord](const SortKey& p, const SortKey& q) { return p.c[coord] < q.c[coord]; });
-    else
-      std::nth_element(b, m, e, [coord](const SortKey& p, const SortKey& q) { return p.c[coord] > q.c[coord]; });
-    return m;
-  };
-  SortKey* m2 = split(begin, end, x, up_x);
-  SortKey* m1 = split(begin, m2, y, up_y);
-  SortKey* m3 = split(m2, end, y, !up_y);
-  hilbert_sort(begin, m1, y, up_y, up_x);
-  hilbert_sort(m1, m2, x, up_x, up_y);
-  hilbert_sort(m2, m3, x, up_x, up_y);
-  hilbert_sort(m3, end, y, !up_y, !up_x);
+  SortKey* m2 = hilbert_split<x, up_x>(begin, end);
+  SortKey* m1 = hilbert_split<y, up_y>(begin, m2);
+  SortKey* m3 = hilbert_split<y, !up_y>(m2, end);
+  hilbert_sort<y, up_y, up_x>(begin, m1);
+  hilbert_sort<x, up_x, up_y>(m1, m2);
+  hilbert_sort<x, up_x, up_y>(m2, m3);
+  hilbert_sort<y, !up_y, !up_x>(m3, end);
 }
 
 /// BRIO rounds: sort the last 3/4 along the curve, recurse on the first quarter.
@@ -64,7 +68,7 @@ inline void brio_sort(SortKey* begin, SortKey* end) {
     middle = begin + (end - begin) / 4;
     brio_sort(begin, middle);
   }
-  hilbert_sort(middle, end, 0, true, true);
+  hilbert_sort<0, true, true>(middle, end);
 }
 
 }  // namespace detail
