@@ -187,6 +187,23 @@ TEST(GraderHostile, InfiniteLoopIsStoppedAndTheRunHasAnOverallLimit) {
   EXPECT_NE(r.output.find("overall time limit"), std::string::npos) << r.output;
 }
 
+TEST(GraderHostile, CompilingHasItsOwnTimeLimit) {
+  // A constant expression of billions of steps: the compiler is stopped at --compile-limit,
+  // whatever the tests' limits, and the run says so.
+  TempDir t;
+  std::ofstream(t.path / "classify.cpp") << slurp(kExercises / "01-t2-plane" / "solution" / "classify.cpp") << R"(
+constexpr long t2_slow() { long s = 0; for (long i = 0; i < 4000000000L; ++i) s += i % 7; return s; }
+static_assert(t2_slow() > 0);
+)";
+  grade(kTool, "01", kExercises / "01-t2-plane");  // warms the cache of trusted programs
+  const auto start = std::chrono::steady_clock::now();
+  const Results r = grade(kTool, "01", t.path, "--compile-limit 3");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30);
+  EXPECT_EQ(r.score, 0);
+  EXPECT_NE(r.output.find("ran out of time"), std::string::npos) << r.output;
+  for (const auto& t : r.tests) EXPECT_NE(t.output.find("compiling ran out of time"), std::string::npos) << t.output;
+}
+
 TEST(GraderHostile, CrashesAreNamedOnPublicTestsOnly) {
   const Results r = grade(kTool, "01", kHostile / "segfault", "--time-limit 1");
   for (const auto& t : r.tests) {

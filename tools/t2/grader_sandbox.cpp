@@ -229,7 +229,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
         s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
         f["network_interfaces"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
     s.description += prepared.tree_limits.empty() ? "; no cgroup (per-process limits only)"
-                                                  : "; cgroup for the whole tree: " + prepared.tree_limits;
+                                                  : "; a cgroup for the whole tree of each run (the probe run's: " + prepared.tree_limits + ")";
     if (!s.works) s.description = "UNSAFE sandbox, student code is not run: " + s.description;
   }
   done = std::make_unique<Sandbox>(s);
