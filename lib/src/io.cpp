@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <fstream>
-#include <iterator>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <system_error>
 
@@ -19,6 +19,17 @@ namespace {
   throw std::system_error(errno, std::generic_category(), what);
 }
 }  // namespace
+
+std::string read_file(const fs::path& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) fail("cannot read " + path.string());
+  std::string text;
+  char buf[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);
+  if (std::ferror(f.get())) fail("cannot read " + path.string());
+  return text;
+}
 
 void write_file_atomically(const fs::path& path, std::string_view content) {
   const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -58,10 +69,12 @@ void write_file_atomically(const fs::path& path, std::string_view content) {
 }
 
 bool update_file_atomically(const fs::path& path, std::string_view content) {
-  std::ifstream in(path, std::ios::binary);
-  if (in) {
-    const std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (old == content) return false;
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) {
+    try {
+      if (read_file(path) == content) return false;
+    } catch (const std::system_error&) {  // unreadable: rewrite it
+    }
   }
   write_file_atomically(path, content);
   return true;

@@ -3,18 +3,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <memory>
 #include <optional>
 #include <system_error>
 #include <unordered_map>
 #include <utility>
+
+#include "t2/io.hpp"
 
 namespace t2 {
 
@@ -312,16 +310,13 @@ std::vector<std::string_view> scene_block_keywords() {
 Scene parse_scene(std::string_view text, std::string name) { return Parser(text, std::move(name)).run(); }
 
 Scene read_scene(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(name.c_str(), "rb"), &std::fclose);
-  if (!f) throw BadInput(fmt::format("{}: cannot read the scene file: {}", name, std::strerror(errno)));
   std::string text;
-  char buf[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);
-  if (std::ferror(f.get()))
-    throw BadInput(fmt::format("{}: cannot read the scene file: {}", name, std::strerror(errno)));
-  return parse_scene(text, name);
+  try {
+    text = read_file(path);
+  } catch (const std::system_error& e) {
+    throw BadInput(fmt::format("{}: cannot read the scene file: {}", path.string(), e.code().message()));
+  }
+  return parse_scene(text, path.string());
 }
 
 }  // namespace t2

@@ -1,6 +1,8 @@
 // t2 book: build the HTML book; check and sync the listings cut from source files.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <memory>
 #include <string>
 
 #include "book_core.hpp"
@@ -20,45 +22,20 @@ struct BookArgs {
   bool quiet = false;
 };
 
-BookArgs parse(Args args) {
-  BookArgs a;
-  std::size_t i = 0;
-  if (i < args.size() && !args[i].empty() && args[i][0] != '-') a.action = args[i++];
-  if (a.action != "build" && a.action != "check" && a.action != "sync")
-    throw UsageError("unknown action '" + a.action + "' (build, check or sync)");
-  for (; i < args.size(); ++i) {
-    const std::string& s = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError(s + " needs a value");
-      return args[++i];
-    };
-    if (s == "--out" || s == "-o") {
-      a.out = value();
-    } else if (s == "--root") {
-      a.root = value();
-    } else if (s == "--programs") {
-      a.programs = value();
-    } else if (s == "--docs") {
-      a.docs = value();
-    } else if (s == "--quiet" || s == "-q") {
-      a.quiet = true;
-    } else {
-      throw UsageError("unexpected argument '" + s + "'");
-    }
-  }
+// The options that belong to one action only.
+void check_options(const BookArgs& a) {
   if (a.action != "check" && !a.programs.empty()) throw UsageError("--programs is an option of `t2 book check`");
   if (a.action != "build" && (!a.out.empty() || !a.docs.empty()))
     throw UsageError("--out and --docs are options of `t2 book build`");
   if (!fs::is_directory(a.root / "chapters")) throw UsageError("no chapters/ folder in " + a.root.string());
-  return a;
 }
 
 void print_problems(const std::vector<book::Problem>& ps) {
   for (const auto& p : ps) fmt::print(stderr, "{}: {}\n", p.where, p.message);
 }
 
-int run(Args args) {
-  const BookArgs a = parse(args);
+int book_command(const BookArgs& a) {
+  check_options(a);
   if (a.action == "check") {
     int listings = 0, outputs = 0;
     fs::path programs = a.programs;
@@ -111,31 +88,42 @@ int run(Args args) {
   return kOk;
 }
 
+Action setup(CLI::App& app) {
+  auto a = std::make_shared<BookArgs>();
+  app.description(
+      "ACTION is build (the default), check or sync; --out and --docs are options of build,\n"
+      "--programs of check.\n"
+      "\n"
+      "build  Makes the HTML book with pandoc: a contents page by part, one page per chapter\n"
+      "       (chapters/NN-slug/chapter.md) with previous/next links, and one per exercise\n"
+      "       sheet. Math is MathML, figures are copied, library names in inline code link to\n"
+      "       the Doxygen reference (DIR/t2.tag and DIR/html; default: the docs/ folder of\n"
+      "       this build). Default output: <build>/book/index.html. Needs no server.\n"
+      "check  Fails (exit 1) when a listing differs from the source region it is cut from,\n"
+      "       when a marker //> NAME ... //< NAME is missing, or when a figure or link target\n"
+      "       does not exist. Prints chapter:line, listing and the first differing line.\n"
+      "       It also runs each chapter program (figures to a scratch folder) and fails when a\n"
+      "       ```text block of its chapter quotes a line the program does not print (the\n"
+      "       block's lines must appear in the output in order; an excerpt is fine). The\n"
+      "       programs are DIR/chapter_NN with --programs DIR, by default this build's bin/\n"
+      "       when --root is the checkout t2 was built from (otherwise output is unchecked).\n"
+      "sync   Rewrites every listing of every chapter from its source region.");
+  app.add_option("ACTION", a->action, "build (the default), check or sync")
+      ->check(CLI::IsMember({"build", "check", "sync"}));
+  app.add_option("--out,-o", a->out, "build: the output folder (default <build>/book)")->type_name("DIR");
+  app.add_option("--docs", a->docs, "build: the Doxygen output to link to (DIR/t2.tag, DIR/html)")->type_name("DIR");
+  app.add_option("--programs", a->programs, "check: the folder of the chapter_NN programs")->type_name("DIR");
+  app.add_option("--root", a->root, "work on another checkout (default: the one t2 was built from)")
+      ->type_name("DIR");
+  app.add_flag("--quiet,-q", a->quiet, "print only problems");
+  app.footer(
+      "A listing in chapter.md is the comment <!-- listing: PATH#NAME --> (PATH relative to\n"
+      "the repository root) followed by a fenced code block; see chapters/README.md.");
+  return [a] { return book_command(*a); };
+}
+
 }  // namespace
 
-T2_COMMAND({"book", "build the HTML book; check or sync its listings",
-            "Usage: t2 book [build] [--out DIR] [--docs DIR] [--root DIR] [--quiet]\n"
-            "       t2 book check [--root DIR] [--programs DIR]\n"
-            "       t2 book sync  [--root DIR]\n"
-            "\n"
-            "build  Makes the HTML book with pandoc: a contents page by part, one page per chapter\n"
-            "       (chapters/NN-slug/chapter.md) with previous/next links, and one per exercise\n"
-            "       sheet. Math is MathML, figures are copied, library names in inline code link to\n"
-            "       the Doxygen reference (DIR/t2.tag and DIR/html; default: the docs/ folder of\n"
-            "       this build). Default output: <build>/book/index.html. Needs no server.\n"
-            "check  Fails (exit 1) when a listing differs from the source region it is cut from,\n"
-            "       when a marker //> NAME ... //< NAME is missing, or when a figure or link target\n"
-            "       does not exist. Prints chapter:line, listing and the first differing line.\n"
-            "       It also runs each chapter program (figures to a scratch folder) and fails when a\n"
-            "       ```text block of its chapter quotes a line the program does not print (the\n"
-            "       block's lines must appear in the output in order; an excerpt is fine). The\n"
-            "       programs are DIR/chapter_NN with --programs DIR, by default this build's bin/\n"
-            "       when --root is the checkout t2 was built from (otherwise output is unchecked).\n"
-            "sync   Rewrites every listing of every chapter from its source region.\n"
-            "\n"
-            "A listing in chapter.md is the comment <!-- listing: PATH#NAME --> (PATH relative to\n"
-            "the repository root) followed by a fenced code block; see chapters/README.md.\n"
-            "--root DIR works on another checkout (default: the one t2 was built from).\n",
-            run});
+T2_COMMAND({"book", "build the HTML book; check or sync its listings", setup});
 
 }  // namespace t2cli

@@ -1,9 +1,11 @@
 // t2 draw: the picture of a scene file in the planar model, the spherical model, or both.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,22 +19,6 @@ namespace t2cli {
 namespace {
 
 namespace dr = t2::draw;
-
-enum class Model { plane, sphere, both };
-
-Model parse_model(const std::string& s) {
-  if (s == "plane") return Model::plane;
-  if (s == "sphere") return Model::sphere;
-  if (s == "both") return Model::both;
-  throw UsageError(fmt::format("--model must be plane, sphere or both, not '{}'", s));
-}
-
-dr::Format parse_format(const std::string& s) {
-  if (s == "svg") return dr::Format::svg;
-  if (s == "png") return dr::Format::png;
-  if (s == "pdf") return dr::Format::pdf;
-  throw UsageError(fmt::format("--format must be svg, png or pdf, not '{}'", s));
-}
 
 double parse_degrees(const std::string& s, const char* what, double limit) {
   char* end = nullptr;
@@ -80,76 +66,80 @@ dr::PlaneView fit_plane(const t2::Scene& s) {
   return v;
 }
 
-int run(Args args) {
-  std::optional<std::string> file, output, format_name;
-  Model model = Model::both;
+struct Options {
+  std::string file, output;
+  std::optional<std::string> format;
+  std::string model = "both";
   dr::SphereView sphere;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 == args.size()) throw UsageError(fmt::format("{} needs a value", a));
-      return args[++i];
-    };
-    if (a == "-o") {
-      output = value();
-    } else if (a == "--model") {
-      model = parse_model(value());
-    } else if (a == "--format") {
-      format_name = value();
-    } else if (a == "--view") {
-      const std::string& v = value();
-      const auto comma = v.find(',');
-      if (comma == std::string::npos) throw UsageError(fmt::format("--view takes LAT,LON, not '{}'", v));
-      sphere.lat = parse_degrees(v.substr(0, comma), "LAT", 90);
-      sphere.lon = parse_degrees(v.substr(comma + 1), "LON", 360);
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw UsageError(fmt::format("unknown option '{}'", a));
-    } else if (file) {
-      throw UsageError("give exactly one scene file");
-    } else {
-      file = a;
-    }
-  }
-  if (!file) throw UsageError("give a scene file");
-  if (!output) throw UsageError("give the output file with -o OUT");
+};
+
+// --view LAT,LON
+dr::SphereView parse_view(const std::string& v) {
+  const auto comma = v.find(',');
+  if (comma == std::string::npos) throw UsageError(fmt::format("--view takes LAT,LON, not '{}'", v));
+  dr::SphereView sphere;
+  sphere.lat = parse_degrees(v.substr(0, comma), "LAT", 90);
+  sphere.lon = parse_degrees(v.substr(comma + 1), "LON", 360);
+  return sphere;
+}
+
+dr::Format format_named(const std::string& s) {
+  if (s == "svg") return dr::Format::svg;
+  if (s == "png") return dr::Format::png;
+  return dr::Format::pdf;  // --format allows only these three
+}
+
+int draw(const Options& o) {
   // The format first: a bad extension must not cost a parse, and must not leave a file.
-  const dr::Format fmt = format_name ? parse_format(*format_name) : dr::format_of(*output);
-  const t2::Scene scene = t2::read_scene(*file);  // ParseError: file:line: message, exit 2
+  const dr::Format fmt = o.format ? format_named(*o.format) : dr::format_of(o.output);
+  const t2::Scene scene = t2::read_scene(o.file);  // ParseError: file:line: message, exit 2
   const dr::Figure fig = dr::figure_of(scene);
   const dr::PlaneView plane = fit_plane(scene);
   std::string bytes;
-  switch (model) {
-    case Model::plane: bytes = dr::render(fig, plane, fmt); break;
-    case Model::sphere: bytes = dr::render(fig, sphere, fmt); break;
-    case Model::both: bytes = dr::render_both(fig, plane, sphere, fmt); break;
-  }
-  t2::write_file_atomically(*output, bytes);
+  if (o.model == "plane")
+    bytes = dr::render(fig, plane, fmt);
+  else if (o.model == "sphere")
+    bytes = dr::render(fig, o.sphere, fmt);
+  else
+    bytes = dr::render_both(fig, plane, o.sphere, fmt);
+  t2::write_file_atomically(o.output, bytes);
   return kOk;
+}
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Reads the scene file FILE (the format is described in the README, section \"Scene\n"
+      "files\") and draws its points (with their labels), segments (blue), polygons\n"
+      "(green), lines (grey, arrow: orientation) and circles (red: finite, beyond infinity\n"
+      "on the other side, or infinite: a line or Ω), following the conventions of the\n"
+      "figures: front side solid with filled markers, back side dashed with hollow markers,\n"
+      "Ω a grey ring (planar model) or the equator (spherical model).");
+  app.add_option("FILE", o->file, "the scene file")->required();
+  app.add_option("--model", o->model, "plane, sphere or both side by side (default both)")
+      ->check(CLI::IsMember({"plane", "sphere", "both"}))
+      ->type_name("plane|sphere|both");
+  app.add_option_function<std::string>(
+         "--view", [o](const std::string& v) { o->sphere = parse_view(v); },
+         "direction from which the sphere is seen, degrees (default 25,-65)")
+      ->type_name("LAT,LON");
+  app.add_option("--format", o->format, "svg, png or pdf (default: from the extension of OUT)")
+      ->check(CLI::IsMember({"svg", "png", "pdf"}))
+      ->type_name("svg|png|pdf");
+  app.add_option("-o", o->output, "the picture; written atomically, only when everything succeeded")
+      ->required()
+      ->type_name("OUT");
+  app.footer(
+      "The planar view is centred at the origin and wide enough for every finite point\n"
+      "and every circle of finite radius.\n"
+      "\n"
+      "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
+      "reads file:line: what is wrong; no output file is created).");
+  return [o] { return draw(*o); };
 }
 
 }  // namespace
 
-T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model, or both",
-            "Usage: t2 draw FILE [--model plane|sphere|both] [--view LAT,LON] [--format svg|png|pdf] -o OUT\n"
-            "\n"
-            "Reads the scene file FILE (the format is described in the README, section \"Scene\n"
-            "files\") and draws its points (with their labels), segments (blue), polygons\n"
-            "(green), lines (grey, arrow: orientation) and circles (red: finite, beyond infinity\n"
-            "on the other side, or infinite: a line or Ω), following the conventions of the\n"
-            "figures: front side solid with filled\n"
-            "markers, back side dashed with hollow markers, Ω a grey ring (planar model) or the\n"
-            "equator (spherical model).\n"
-            "\n"
-            "  --model M        plane, sphere or both side by side (default both)\n"
-            "  --view LAT,LON   direction from which the sphere is seen, degrees (default 25,-65)\n"
-            "  --format F       svg, png or pdf (default: from the extension of OUT)\n"
-            "  -o OUT           the picture; written atomically, only when everything succeeded\n"
-            "\n"
-            "The planar view is centred at the origin and wide enough for every finite point\n"
-            "and every circle of finite radius.\n"
-            "\n"
-            "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
-            "reads file:line: what is wrong; no output file is created).\n",
-            run});
+T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model, or both", setup});
 
 }  // namespace t2cli

@@ -1,30 +1,26 @@
 // t2 figures: regenerate every figure of the book (chapter programs and the gallery), or check
 // that the committed figures are what the programs draw.
-#include <fcntl.h>
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <optional>
+#include <memory>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "command.hpp"
+#include "process.hpp"
 #include "t2/error.hpp"
-
-extern char** environ;
+#include "t2/io.hpp"
 
 namespace t2cli {
 namespace {
@@ -37,7 +33,6 @@ struct Job {
   std::string slug;  // NN-slug or gallery
   fs::path out;      // the folder given with --figures
   fs::path log;      // its stderr
-  pid_t pid = -1;
   int status = -1;   // exit status, -1 when it did not exit normally
 };
 
@@ -46,13 +41,6 @@ fs::path bin_dir() {
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) throw t2::BadInput("cannot find the folder of the t2 program (/proc/self/exe)");
   return exe.parent_path();
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // The programs next to this t2: every chapter_NN whose chapters/NN-slug/ exists in the source
@@ -78,42 +66,21 @@ std::vector<Job> find_jobs(const fs::path& bin, const fs::path& root, std::vecto
   return jobs;
 }
 
-pid_t spawn(Job& j) {
-  const std::string prog = j.program.string(), out = j.out.string(), log = j.log.string();
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<char*> argv = {const_cast<char*>(prog.c_str()), const_cast<char*>("--figures"),
-                             const_cast<char*>(out.c_str()), nullptr};
-  pid_t pid = -1;
-  const int rc = posix_spawn(&pid, prog.c_str(), &fa, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw t2::BadInput(fmt::format("cannot run {}: {}", prog, std::strerror(rc)));
-  return pid;
-}
-
 // Runs the jobs, at most `parallel` at a time; fills in their exit statuses.
 void run_all(std::vector<Job>& jobs, unsigned parallel) {
-  std::size_t next = 0, running = 0;
-  while (next < jobs.size() || running > 0) {
-    while (next < jobs.size() && running < parallel) {
-      jobs[next].pid = spawn(jobs[next]);
-      ++next;
-      ++running;
-    }
-    int raw = 0;
-    const pid_t pid = ::waitpid(-1, &raw, 0);
-    if (pid < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(fmt::format("waitpid: {}", std::strerror(errno)));
-    }
-    for (auto& j : jobs)
-      if (j.pid == pid) {
-        j.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-        --running;
-      }
+  std::vector<t2proc::Spec> specs;
+  for (const auto& j : jobs) {
+    t2proc::Spec s;
+    s.argv = {j.program.string(), "--figures", j.out.string()};
+    s.out = t2proc::Stream::discard;
+    s.err_file = j.log;
+    specs.push_back(std::move(s));
+  }
+  const auto results = t2proc::run_all(specs, static_cast<int>(parallel));
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    if (!results[i].started)
+      throw t2::BadInput(fmt::format("cannot run {}: {}", jobs[i].program.string(), results[i].error));
+    jobs[i].status = results[i].exit_code;
   }
 }
 
@@ -126,29 +93,15 @@ std::set<std::string> files_in(const fs::path& dir) {
   return names;
 }
 
-int run(Args args) {
+struct Options {
   bool check = false;
   unsigned parallel = std::max(1u, std::thread::hardware_concurrency());
   fs::path root = T2_SOURCE_DIR;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--check") {
-      check = true;
-    } else if (a == "--jobs" || a == "-j") {
-      if (i + 1 == args.size()) throw UsageError(fmt::format("{} needs a number", a));
-      const std::string& v = args[++i];
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end != '\0' || n < 1 || n > 256)
-        throw UsageError(fmt::format("--jobs needs a number from 1 to 256, not '{}'", v));
-      parallel = static_cast<unsigned>(n);
-    } else if (a == "--root") {
-      if (i + 1 == args.size()) throw UsageError("--root needs a folder");
-      root = args[++i];
-    } else {
-      throw UsageError(fmt::format("unknown argument '{}'", a));
-    }
-  }
+};
+
+int figures(const Options& o) {
+  const bool check = o.check;
+  const fs::path& root = o.root;
   const fs::path bin = bin_dir();
   std::vector<std::string> unbuilt;
   std::vector<Job> jobs = find_jobs(bin, root, unbuilt);
@@ -177,14 +130,14 @@ int run(Args args) {
     j.log = tmp / (j.slug + ".log");
     fs::create_directories(j.out);
   }
-  run_all(jobs, parallel);
+  run_all(jobs, o.parallel);
 
   int failed_programs = 0;
   for (const auto& j : jobs)
     if (j.status != 0) {
       ++failed_programs;
       fmt::print(stderr, "t2 figures: {} --figures {} failed (exit status {}):\n{}", j.program.string(),
-                 j.out.string(), j.status, slurp(j.log));
+                 j.out.string(), j.status, t2::read_file(j.log));
     }
   if (failed_programs > 0) return kFailed;
 
@@ -213,7 +166,7 @@ int run(Args args) {
       ++compared;
       if (!have.count(f))
         problems.push_back(fmt::format("missing: figures/{}/{}", slug, f));
-      else if (slurp(fresh / f) != slurp(committed / f))
+      else if (t2::read_file(fresh / f) != t2::read_file(committed / f))
         problems.push_back(fmt::format("differs: figures/{}/{}", slug, f));
     }
     for (const auto& f : have)
@@ -228,24 +181,29 @@ int run(Args args) {
   return kOk;
 }
 
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Runs, in parallel, every chapter program bin/chapter_NN next to this t2 (for each\n"
+      "chapters/NN-slug/ of the source tree) with --figures figures/NN-slug, and\n"
+      "bin/gallery with --figures figures/gallery. Programs only rewrite figures whose\n"
+      "bytes changed.");
+  app.add_flag("--check", o->check,
+               "draw into a temporary folder instead and compare: print every figure\n"
+               "that differs from the committed one or is missing, and every file of\n"
+               "figures/ that no program writes; change nothing");
+  app.add_option("--jobs,-j", o->parallel, "run at most N programs at a time (default: the number of cores)")
+      ->check(CLI::Range(1, 256))
+      ->type_name("N");
+  app.add_option("--root", o->root, "the source tree (default: the one this t2 was built from)")->type_name("DIR");
+  app.footer(
+      "Exit status: 0 done (or, with --check, everything up to date); 1 a program failed\n"
+      "or, with --check, some figure is out of date; 2 bad usage or no programs built.");
+  return [o] { return figures(*o); };
+}
+
 }  // namespace
 
-T2_COMMAND({"figures", "regenerate every figure (chapters and gallery), or check them",
-            "Usage: t2 figures [--check] [--jobs N] [--root DIR]\n"
-            "\n"
-            "Runs, in parallel, every chapter program bin/chapter_NN next to this t2 (for each\n"
-            "chapters/NN-slug/ of the source tree) with --figures figures/NN-slug, and\n"
-            "bin/gallery with --figures figures/gallery. Programs only rewrite figures whose\n"
-            "bytes changed.\n"
-            "\n"
-            "  --check    draw into a temporary folder instead and compare: print every figure\n"
-            "             that differs from the committed one or is missing, and every file of\n"
-            "             figures/ that no program writes; change nothing\n"
-            "  --jobs N   run at most N programs at a time (default: the number of cores)\n"
-            "  --root DIR the source tree (default: the one this t2 was built from)\n"
-            "\n"
-            "Exit status: 0 done (or, with --check, everything up to date); 1 a program failed\n"
-            "or, with --check, some figure is out of date; 2 bad usage or no programs built.\n",
-            run});
+T2_COMMAND({"figures", "regenerate every figure (chapters and gallery), or check them", setup});
 
 }  // namespace t2cli

@@ -48,7 +48,7 @@ class Help : public CLI::Formatter {
     for (const CLI::Option* o : app->get_options()) {
       if (o == app->get_help_ptr()) continue;
       std::string word = o->get_positional() ? o->get_name(true, false) : shortest_long_name(o);
-      if (!o->get_positional() && !o->get_type_name().empty()) word += " " + o->get_type_name();
+      if (!o->get_positional() && !type_word(o).empty()) word += " " + type_word(o);
       if (o->get_expected_max() > 1) word += "...";
       out += " " + (o->get_required() ? word : "[" + word + "]");
     }
@@ -70,6 +70,12 @@ class Help : public CLI::Formatter {
   }
 
  private:
+  // The word for an option's value (OUT, DIR, N), without what CLI11 appends for its checks.
+  static std::string type_word(const CLI::Option* o) {
+    const std::string t = o->get_type_name();
+    return t.substr(0, t.find(':'));
+  }
+
   // The name shown in the usage line: the long one (--jobs) when there is one.
   static std::string shortest_long_name(const CLI::Option* o) {
     if (!o->get_lnames().empty()) return "--" + o->get_lnames().front();
@@ -87,12 +93,11 @@ class Help : public CLI::Formatter {
       } else {
         for (const auto& s : o->get_snames()) n += (n.empty() ? "-" : ", -") + s;
         for (const auto& l : o->get_lnames()) n += (n.empty() ? "--" : ", --") + l;
-        if (!o->get_type_name().empty()) n += " " + o->get_type_name();
+        if (!type_word(o).empty()) n += " " + type_word(o);
       }
-      width = std::max(width, n.size());
+      if (n.size() <= 20) width = std::max(width, n.size());  // longer ones get a line of their own
       names.push_back(n);
     }
-    width = std::min<std::size_t>(width, 24);
     std::string out = positional ? "\nArguments:\n" : "\nOptions:\n";
     for (std::size_t i = 0; i < os.size(); ++i) {
       std::string line = fmt::format("  {:<{}}  ", names[i], width);

@@ -1,11 +1,17 @@
 #pragma once
 /// @file io.hpp
-/// @brief Files written atomically: a reader sees the old file or the whole new one, never half.
+/// @brief Whole files: read in one call, written atomically (a reader sees the old file or the
+/// whole new one, never half).
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace t2 {
+
+/// The whole content of the file at `path`, byte for byte. Throws `std::system_error` (its
+/// message "cannot read PATH: reason") when the file cannot be opened or read.
+std::string read_file(const std::filesystem::path& path);
 
 /// Writes `content` to `path` through a temporary file in the same directory and a rename, so
 /// that an error (or a crash) never leaves a half-written file. Creates missing parent
