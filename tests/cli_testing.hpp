@@ -1,17 +1,20 @@
 #pragma once
 // Tests of the `t2` command line: each test gets its own folder, runs the built tool there
-// (T2_TOOL) and sees its exit status, stdout, stderr and the files it leaves behind.
+// (T2_TOOL, through t2proc) and sees its exit status, stdout, stderr and the files it leaves
+// behind. Also: whether an optional program (pandoc, chromium) is installed, for tests that skip.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "process.hpp"
+#include "t2/io.hpp"
 
 namespace t2::testing {
 
@@ -25,10 +28,40 @@ struct Result {
 
 /// The whole content of a file ("" if it does not exist).
 inline std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::error_code ec;
+  return fs::exists(p, ec) ? t2::read_file(p) : std::string();
+}
+
+/// True when `name` is an executable file in a folder of PATH. A test that needs an optional
+/// program skips without it: if (!have_program("pandoc")) GTEST_SKIP() << "...";
+inline bool have_program(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string_view dirs = path ? path : "/usr/bin:/bin";
+  while (!dirs.empty()) {
+    const auto colon = dirs.find(':');
+    const fs::path dir(std::string(dirs.substr(0, colon)));
+    if (!dir.empty() && ::access((dir / name).c_str(), X_OK) == 0) return true;
+    dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
+  }
+  return false;
+}
+
+/// A shell command line run through t2proc (no shell of our own, no popen): its exit status
+/// (-1 when killed by a signal or not started) and stdout; stderr too with `with_stderr`
+/// ("2>&1", in the order written).
+struct Shell {
+  int status = -1;
+  std::string out;
+};
+inline Shell shell(const std::string& command, const fs::path& cwd = {}, const std::string& input = "",
+                   bool with_stderr = true) {
+  t2proc::Spec s;
+  s.argv = {"/bin/sh", "-c", with_stderr ? "exec 2>&1; " + command : command};
+  s.cwd = cwd;
+  s.stdin_data = input;
+  s.err = t2proc::Stream::inherit;
+  const t2proc::Result r = t2proc::run(s);
+  return {r.started && r.signal == 0 ? r.exit_code : -1, r.out};
 }
 
 inline bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -50,18 +83,18 @@ class CliTest : public ::testing::Test {
     return p;
   }
 
-  // Runs `t2 <args>` in the test folder with `input` on stdin; the capture files are removed
-  // afterwards, so files() lists only what the tool wrote.
+  // Runs `t2 <args>` in the test folder with `input` on stdin (args are split by the shell, so
+  // they may quote); files() lists only what the tool wrote.
   Result t2(const std::string& args, const std::string& input = "") {
-    write(".stdin", input);
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + std::string(T2_TOOL) + "' " + args +
-                            " <.stdin >.stdout 2>.stderr";
-    const int raw = std::system(cmd.c_str());
+    t2proc::Spec s;
+    s.argv = {"/bin/sh", "-c", "exec '" + std::string(T2_TOOL) + "' " + args};
+    s.cwd = dir_;
+    s.stdin_data = input;
+    const t2proc::Result p = t2proc::run(s);
     Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir_ / ".stdout");
-    r.err = slurp(dir_ / ".stderr");
-    for (const char* f : {".stdin", ".stdout", ".stderr"}) fs::remove(dir_ / f);
+    r.status = p.started && p.signal == 0 ? p.exit_code : -1;
+    r.out = p.out;
+    r.err = p.err;
     return r;
   }
 

@@ -2,24 +2,27 @@
 // made here (drift, missing markers, missing figures and links), `t2 list`, `t2 run`, the HTML
 // book of this repository (every page, every local link and image), and headless Chromium
 // loading the pages (images decoded, MathML laid out, a screenshot).
+// Tests that need pandoc (every check and build) or Chromium skip, saying so, without them.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <regex>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "cli_testing.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
+
+using t2::testing::have_program;
+using t2::testing::slurp;
 
 struct Result {
   int status = -1;
@@ -27,23 +30,14 @@ struct Result {
 };
 
 Result run(const std::string& cmd) {
-  Result r;
-  FILE* p = ::popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
+  const auto r = t2::testing::shell(cmd);
+  return {r.status, r.out};
 }
+
+#define T2_NEEDS_PANDOC() \
+  if (!have_program("pandoc")) GTEST_SKIP() << "pandoc is not installed (the Debian package pandoc): skipped"
 
 std::string tool() { return T2_TOOL; }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 void spit(const fs::path& p, const std::string& s) {
   fs::create_directories(p.parent_path());
@@ -115,6 +109,7 @@ std::vector<std::string> listing_lines(const std::string& md) {
 }
 
 TEST(BookCheck, ThisRepositoryIsInSync) {
+  T2_NEEDS_PANDOC();
   const Result r = run(tool() + " book check");
   EXPECT_EQ(r.status, 0) << r.output;
   // The chapters' quoted output was checked against their programs (built with the tool).
@@ -135,6 +130,7 @@ Result check_quoted_output(const TempDir& t, const std::string& block, const std
 }
 
 TEST(BookCheck, QuotedOutputMustBePrintedByTheChapterProgramInOrder) {
+  T2_NEEDS_PANDOC();
   const std::string prints = "echo alpha; echo '  beta  '; echo gamma; echo figures >&2\n";
   {
     TempDir t;  // the whole output, with its indentation; trailing spaces do not matter
@@ -191,6 +187,7 @@ TEST(BookCheck, QuotedOutputMustBePrintedByTheChapterProgramInOrder) {
 }
 
 TEST(BookCheck, CleanRepositoryPasses) {
+  T2_NEEDS_PANDOC();
   TempDir t;
   make_repo(t.path);
   const Result r = run(tool() + " book check --root " + t.path.string());
@@ -199,6 +196,7 @@ TEST(BookCheck, CleanRepositoryPasses) {
 }
 
 TEST(BookCheck, DriftIsReportedWithChapterListingAndLineThenSyncFixesIt) {
+  T2_NEEDS_PANDOC();
   TempDir t;
   make_repo(t.path);
   // The author changes the code: the listing in the chapter is now stale at its 3rd line.
@@ -228,6 +226,7 @@ TEST(BookCheck, DriftIsReportedWithChapterListingAndLineThenSyncFixesIt) {
 }
 
 TEST(BookCheck, SyncCreatesTheBlockAfterABareComment) {
+  T2_NEEDS_PANDOC();
   TempDir t;
   make_repo(t.path);
   spit(t.path / "chapters/02-beta/chapter.md",
@@ -242,6 +241,7 @@ TEST(BookCheck, SyncCreatesTheBlockAfterABareComment) {
 }
 
 TEST(BookCheck, MissingMarkerFigureAndLinkFail) {
+  T2_NEEDS_PANDOC();
   {
     TempDir t;
     make_repo(t.path);
@@ -271,6 +271,39 @@ TEST(BookCheck, MissingMarkerFigureAndLinkFail) {
         << r.output;
     EXPECT_EQ(r.output.find("a-link.md"), std::string::npos) << r.output;  // inline code is not a link
   }
+}
+
+TEST(BookCheck, LinksAndOutputBlocksAreThoseOfPandocsReading) {
+  T2_NEEDS_PANDOC();
+  TempDir t;
+  make_repo(t.path);
+  // A link written over two lines, a reference link, an autolink to a web page, a link in an
+  // HTML comment and one in inline code: the first two are checked, the others are not links.
+  spit(t.path / "chapters/02-beta/chapter.md",
+       "# Beta\n\nSee [the\ngone one](../03-gamma/chapter.md), [a ref][r], <https://example.org/x.md>,\n"
+       "<!-- [hidden](nowhere.md) --> and `[not](a-link.md)`.\n\n[r]: missing%20ref.md\n");
+  // Output quoted in a ~~~ fence with attributes, not only in ```text.
+  const fs::path md = t.path / "chapters/01-alpha/chapter.md";
+  spit(md, slurp(md) + "\n~~~ {.text}\nalpha\ndelta\n~~~\n");
+  const fs::path exe = t.path / "bin/chapter_01";
+  spit(exe, "#!/bin/sh\necho alpha\n");
+  fs::permissions(exe, fs::perms::owner_all);
+  const Result r = run(tool() + " book check --root " + t.path.string() + " --programs " + (t.path / "bin").string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("chapters/02-beta/chapter.md:4: link target ../03-gamma/chapter.md does not exist"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("chapters/02-beta/chapter.md:7: link target missing ref.md does not exist"), std::string::npos)
+      << r.output;
+  for (const char* not_a_link : {"example.org", "nowhere.md", "a-link.md"})
+    EXPECT_EQ(r.output.find(not_a_link), std::string::npos) << not_a_link << "\n" << r.output;
+  const std::string text = slurp(md);
+  const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.find("delta")), '\n') + 1;
+  EXPECT_NE(r.output.find("chapters/01-alpha/chapter.md:" + std::to_string(line) +
+                          ": the output block quotes a line that chapter_01 does not print (after the block's previous "
+                          "lines): 'delta'"),
+            std::string::npos)
+      << r.output;
 }
 
 TEST(BookList, ListsEveryChapterWithTitleAndProgram) {
@@ -351,6 +384,7 @@ void expect_no_broken_links(const fs::path& out) {
 }
 
 TEST(BookBuild, SmallRepositoryMakesLinkedPages) {
+  T2_NEEDS_PANDOC();
   TempDir t;
   make_repo(t.path / "repo");
   const fs::path out = t.path / "out";
@@ -403,6 +437,7 @@ std::vector<std::string> chapter_folders() {
 }
 
 TEST(BookBuild, EveryChapterOfThisRepositoryHasAPageAndNoBrokenLink) {
+  T2_NEEDS_PANDOC();
   const fs::path& out = real_book();
   ASSERT_TRUE(fs::exists(out / "index.html"));
   const std::string index = slurp(out / "index.html");
@@ -450,11 +485,13 @@ std::string probe(const fs::path& dir, const std::string& page, const fs::path& 
   return r.output;
 }
 
-bool have_chromium() { return run("command -v chromium").status == 0; }
+#define T2_NEEDS_CHROMIUM() \
+  if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/deps.sh): skipped"
 
 TEST(BookBrowser, ImagesLoadAndMathIsLaidOutInChromium) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
-  ASSERT_TRUE(have_chromium()) << "install the Debian package chromium (scripts/deps.sh)";
+  T2_NEEDS_PANDOC();
+  T2_NEEDS_CHROMIUM();
   const fs::path& out = real_book();
   TempDir profile;
   std::vector<std::string> pages = {"index.html"};
@@ -475,7 +512,8 @@ TEST(BookBrowser, ImagesLoadAndMathIsLaidOutInChromium) {
 
 TEST(BookBrowser, ScreenshotsOfContentsAndAChapter) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
-  ASSERT_TRUE(have_chromium());
+  T2_NEEDS_PANDOC();
+  T2_NEEDS_CHROMIUM();
   const fs::path& out = real_book();
   const auto folders = chapter_folders();
   std::vector<std::string> pages = {"index.html"};

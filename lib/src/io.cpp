@@ -80,4 +80,11 @@ bool update_file_atomically(const fs::path& path, std::string_view content) {
   return true;
 }
 
+std::string trim(std::string_view text) {
+  constexpr std::string_view space = " \t\r\n";
+  const auto b = text.find_first_not_of(space);
+  if (b == std::string_view::npos) return "";
+  return std::string(text.substr(b, text.find_last_not_of(space) - b + 1));
+}
+
 }  // namespace t2

@@ -32,10 +32,10 @@ std::vector<Chapter> find_chapters(const fs::path& root);
 /// The chapter named by "1", "01", "01-t2-plane" or "t2-plane"; nullopt if none.
 std::optional<Chapter> find_chapter(const fs::path& root, const std::string& name);
 
-/// Reads a whole file; throws std::runtime_error if it cannot.
-std::string read_text(const fs::path& p);
 /// Splits text into lines (without the newline characters).
 std::vector<std::string> split_lines(const std::string& text);
+/// The lines, each followed by a newline.
+std::string join_lines(const std::vector<std::string>& lines);
 
 /// The region `//> name` ... `//< name` of a C++ source text, common indentation removed.
 /// Throws std::runtime_error naming the file when a marker is missing or doubled.
@@ -65,29 +65,12 @@ struct SyncResult {
 /// Checks every listing of the markdown `text` (file `md`, relative `rel`) against its source.
 SyncResult sync_listings(const fs::path& root, const std::string& rel, const std::string& text);
 
-/// Local link and image targets of a markdown text (outside code), with their 0-based lines.
-struct LinkRef {
-  std::size_t line = 0;  ///< 0-based line
-  std::string target;    ///< as written, without a "#fragment"
-  bool image = false;    ///< `![..](..)`
-};
-std::vector<LinkRef> local_links(const std::string& text);
+/// The length of the code fence that opens or closes at `line` (```` ``` ```` or `~~~`, at most
+/// three spaces in), its character in `ch`; 0 when the line is no fence.
+std::size_t fence_of(const std::string& line, char& ch);
 
 /// All chapter.md files of the repository (relative paths, sorted).
 std::vector<std::string> chapter_markdown_files(const fs::path& root);
-
-/// A ```text block of a chapter: program output quoted by the text.
-struct OutputBlock {
-  int line = 0;                    ///< 0-based line of the opening fence
-  std::vector<std::string> lines;  ///< its non-blank lines, trailing spaces removed
-};
-/// The ```text blocks of a markdown text.
-std::vector<OutputBlock> output_blocks(const std::string& text);
-/// Problems of the output blocks of chapter.md `rel` against `output`, the standard output of
-/// its program `program`: the non-blank lines of each block must be printed by the program, in
-/// that order (a block may quote an excerpt, not every line). One problem per block at most.
-std::vector<Problem> check_outputs(const std::string& rel, const std::string& text, const std::string& output,
-                                   const std::string& program);
 
 /// `t2 book check`: every problem of every chapter (empty when clean). With `programs` (a
 /// directory holding the built chapter_NN programs), each chapter's program is also run and
@@ -97,11 +80,9 @@ std::vector<Problem> check_book(const fs::path& root, int* listings = nullptr, c
 /// `t2 book sync`: rewrites listings; returns the files changed, and problems in `problems`.
 std::vector<std::string> sync_book(const fs::path& root, std::vector<Problem>& problems);
 
-/// Runs a program (no shell) and waits; returns its exit status (128+signal if killed), or
-/// -1 if it could not be started. With `stdout_to_stderr` the child's output goes to stderr.
+/// Runs a program (no shell, through t2proc) with this process's standard output and error and
+/// waits; returns its exit status (128+signal if killed), or -1 if it could not be started.
+/// With `stdout_to_stderr` the child's standard output is collected and then written to stderr.
 int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr = false);
-/// Runs a program as `run_program` does, with its standard output collected into `out` and
-/// its standard error into `err`.
-int run_program_capture(const std::vector<std::string>& argv, std::string& out, std::string& err);
 
 }  // namespace t2cli::book

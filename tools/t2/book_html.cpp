@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "book_ast.hpp"
 #include "book_core.hpp"
 #include "t2/io.hpp"
 
@@ -53,7 +54,7 @@ std::vector<Part> read_parts(const fs::path& file) {
   std::vector<Part> parts;
   if (!fs::exists(file)) return parts;
   static const std::regex re(R"(^\s*([IVXL]+)\s+([0-9]+)\s+([0-9]+)\s+(.+?)\s*$)");
-  for (const auto& l : split_lines(read_text(file))) {
+  for (const auto& l : split_lines(t2::read_file(file))) {
     std::smatch m;
     if (l.empty() || l[0] == '#' || !std::regex_match(l, m, re)) continue;
     parts.push_back({m[1], m[4], std::stoi(m[2]), std::stoi(m[3])});
@@ -99,7 +100,7 @@ std::map<std::string, std::string> read_tag_file(const fs::path& tag) {
   std::string kind, cname, cfile;
   bool in_member = false;
   std::string mname, mfile, manchor;
-  for (const auto& l : split_lines(read_text(tag))) {
+  for (const auto& l : split_lines(t2::read_file(tag))) {
     std::smatch m;
     if (std::regex_search(l, m, compound_re)) {
       kind = m[1];
@@ -172,7 +173,7 @@ int build_book(const BuildOptions& o) {
   auto pandoc = [&](const fs::path& input, const fs::path& output, const std::string& srcdir,
                     const std::string& pagetitle, const std::vector<std::pair<std::string, std::string>>& vars,
                     bool toc) {
-    std::vector<std::string> argv = {"pandoc", input.string(), "--from=markdown+tex_math_dollars-implicit_header_references",
+    std::vector<std::string> argv = {"pandoc", input.string(), std::string("--from=") + kPandocReader,
                                      "--to=html5", "--standalone", "--mathml", "--wrap=none",
                                      "--template=" + (bookdir / "template.html").string(),
                                      "--lua-filter=" + (bookdir / "book.lua").string(),

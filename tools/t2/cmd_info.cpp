@@ -18,15 +18,6 @@
 namespace t2cli {
 namespace {
 
-const char* side_name(t2::Side s) {
-  switch (s) {
-    case t2::Side::front: return "front";
-    case t2::Side::back: return "back";
-    case t2::Side::infinity: return "infinity";
-  }
-  return "?";
-}
-
 // x/w or y/w may overflow a double for a valid point (w = 1e-300, x = 1e300): say so.
 constexpr const char* kOverflow = "(overflows double)";
 
@@ -68,13 +59,13 @@ std::string report(const t2::Scene& s, bool pairs) {
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       const auto& p = s.points[i];
       out += fmt::format("{:<6} {:<6} {:<8} {:<9} {:<36} {}\n", fmt::format("#{}", i + 1), p.line,
-                         p.label.empty() ? "-" : p.label, side_name(t2::side_of(p.point)),
+                         p.label.empty() ? "-" : p.label, t2::to_string(t2::side_of(p.point)),
                          normalized_text(p.point), cartesian(p.point));
     }
   }
   for (const auto& g : s.segments)
-    out += fmt::format("segment (line {}): {} {} to {} {}\n", g.line, side_name(t2::side_of(g.a.point)),
-                       t2::to_string(g.a.point), side_name(t2::side_of(g.b.point)), t2::to_string(g.b.point));
+    out += fmt::format("segment (line {}): {} {} to {} {}\n", g.line, t2::to_string(t2::side_of(g.a.point)),
+                       t2::to_string(g.a.point), t2::to_string(t2::side_of(g.b.point)), t2::to_string(g.b.point));
   for (const auto& g : s.polygons) {
     std::size_t count[3] = {0, 0, 0};
     for (const auto& v : g.vertices) ++count[static_cast<int>(t2::side_of(v.point)) + 1];

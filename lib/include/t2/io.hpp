@@ -1,7 +1,7 @@
 #pragma once
 /// @file io.hpp
 /// @brief Whole files: read in one call, written atomically (a reader sees the old file or the
-/// whole new one, never half).
+/// whole new one, never half); and the one `trim` of the tools.
 
 #include <filesystem>
 #include <string>
@@ -21,5 +21,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 /// Writes `content` only if the file does not already hold exactly that; returns true when it
 /// wrote. Keeps timestamps of unchanged figures, so builds and `git status` stay quiet.
 bool update_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// `text` without its leading and trailing white space (spaces, tabs, carriage returns, newlines).
+std::string trim(std::string_view text);
 
 }  // namespace t2

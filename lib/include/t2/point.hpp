@@ -19,6 +19,16 @@ namespace t2 {
 /// back side (w < 0).
 enum class Side { back = -1, infinity = 0, front = 1 };
 
+/// "front", "back" or "infinity": the name of a side in messages and reports.
+inline const char* to_string(Side s) {
+  switch (s) {
+    case Side::front: return "front";
+    case Side::back: return "back";
+    case Side::infinity: return "infinity";
+  }
+  return "?";
+}
+
 /// A point of the oriented projective plane T², with coordinates of type `T` (`double` or
 /// `Integer`). `[w, x, y]` and `[αw, αx, αy]` are the same point when α > 0; with α < 0 they
 /// are antipodes. `[0, 0, 0]` is not a point: the constructor throws `Undefined`.
@@ -58,6 +68,18 @@ using ExactPoint = BasicPoint<Integer>;
 template <class T>
 BasicPoint<T> antipode(const BasicPoint<T>& p) {
   return BasicPoint<T>(T(-p.w()), T(-p.x()), T(-p.y()));
+}
+
+/// The positive combination αp + βq = [αw_p + βw_q, αx_p + βx_q, αy_p + βy_q], for α, β ≥ 0
+/// not both zero (the caller's duty; not checked). On the sphere it is the direction of the
+/// vector αp + βq: a point of the shorter arc from p to q, so of the segment pq of T² whenever
+/// q ≠ ¬p. Exact with `Integer` coordinates; with `double` the products and sums are rounded
+/// (exact only when they are representable). Throws `Undefined` when the sum is [0, 0, 0]
+/// (αp = −βq, so q = ¬p), and `BadInput` when a `double` coordinate overflows.
+template <class T>
+BasicPoint<T> mix(const T& alpha, const BasicPoint<T>& p, const T& beta, const BasicPoint<T>& q) {
+  return BasicPoint<T>(T(alpha * p.w() + beta * q.w()), T(alpha * p.x() + beta * q.x()),
+                       T(alpha * p.y() + beta * q.y()));
 }
 
 /// The side of T² that holds p: front (w > 0), back (w < 0) or infinity (w = 0).
