@@ -93,7 +93,7 @@ TYPED_TEST(AffineT, LinesKeepTheirSidesThroughTheAdjugate) {
       ASSERT_EQ(side(l2, transform(M, r)), side(l, r));
     }
     const auto j = join(transform(M, p), transform(M, q));
-    ASSERT_EQ(l2, M.determinant_sign() == POSITIVE ? j : reverse(j));
+    ASSERT_EQ(l2, M.determinant_sign() == POSITIVE ? j : opposite(j));
   }
 }
 

@@ -62,7 +62,7 @@ TEST(Line, JoinPassesThroughBothPointsAndIsOriented) {
   EXPECT_EQ(side(l, p), ZERO);
   EXPECT_EQ(side(l, q), ZERO);
   EXPECT_EQ(side(l, ExactPoint(1, 0, 1)), POSITIVE);  // left of p→q
-  EXPECT_EQ(join(q, p), reverse(l));
+  EXPECT_EQ(join(q, p), opposite(l));
 }
 
 TEST(Line, JoinOfEqualOrAntipodalPointsIsUndefined) {
@@ -84,7 +84,7 @@ TEST(Line, MeetOfParallelLinesIsOnOmega) {
   EXPECT_EQ(side(a, m), ZERO);
   EXPECT_EQ(side(b, m), ZERO);
   EXPECT_THROW(meet(a, a), Undefined);
-  EXPECT_THROW(meet(a, reverse(a)), Undefined);
+  EXPECT_THROW(meet(a, opposite(a)), Undefined);
   EXPECT_EQ(side(omega<Integer>(), m), ZERO);
   EXPECT_EQ(side(omega(), Point(1, 5, 5)), POSITIVE);
   EXPECT_EQ(side(omega(), Point(-1, 5, 5)), NEGATIVE);

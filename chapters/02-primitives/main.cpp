@@ -48,7 +48,7 @@ void lines() {
   const t2::ExactLine o = t2::omega<Integer>();  // the line at infinity, front side positive
   //< line-demo
   std::cout << "  join(p, q) = " << t2::to_string(l) << ", join(q, p) = " << t2::to_string(m)
-            << ", reverse(join(p, q)) == join(q, p): " << (t2::reverse(l) == m) << "\n";
+            << ", opposite(join(p, q)) == join(q, p): " << (t2::opposite(l) == m) << "\n";
   std::cout << "  Omega = " << t2::to_string(o) << ": side(Omega, p) = " << sym(t2::side(o, p))
             << ", side(Omega, antipode(p)) = " << sym(t2::side(o, t2::antipode(p))) << "\n";
   attempt("join(p, p)", [&] { return t2::to_string(t2::join(p, p)); });

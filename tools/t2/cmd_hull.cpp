@@ -4,13 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "scene_argument.hpp"
 #include "t2/draw.hpp"
 #include "t2/hull.hpp"
 #include "t2/io.hpp"
@@ -60,13 +59,7 @@ std::string picture(const std::vector<t2::Point>& P, const std::vector<std::size
 
 int hull(const Options& o) {
   const t2::HullAlgorithm a = algorithm_of(o.algorithm);
-  t2::Scene scene;
-  if (o.file == "-") {
-    const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
-    scene = t2::parse_scene(text, "<stdin>");
-  } else {
-    scene = t2::read_scene(o.file);
-  }
+  const t2::Scene scene = read_scene_argument(o.file);
   std::vector<t2::Point> P;
   P.reserve(scene.points.size());
   for (const auto& p : scene.points) P.push_back(p.point);

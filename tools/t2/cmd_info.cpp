@@ -3,14 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <iostream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "scene_argument.hpp"
 #include "t2/io.hpp"
 #include "t2/orient.hpp"
 #include "t2/scene.hpp"
@@ -97,13 +96,7 @@ struct Options {
 };
 
 int info(const Options& o) {
-  t2::Scene scene;
-  if (o.file == "-") {
-    const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
-    scene = t2::parse_scene(text, "<stdin>");
-  } else {
-    scene = t2::read_scene(o.file);
-  }
+  const t2::Scene scene = read_scene_argument(o.file);
   const std::string out = report(scene, o.pairs);
   if (o.output)
     t2::write_file_atomically(*o.output, out);

@@ -114,8 +114,7 @@ BasicCircle<T> circle_from_diameter(const BasicPoint<T>& p, const BasicPoint<T>&
   const BasicPoint<T> c = detail::exactly<T>(
       [](const ExactPoint& a, const ExactPoint& b) {
         const Integer wa = abs(a.w()), wb = abs(b.w());
-        return ExactPoint(Integer(wb * a.w() + wa * b.w()), Integer(wb * a.x() + wa * b.x()),
-                          Integer(wb * a.y() + wa * b.y()));
+        return mix(wb, a, wa, b);
       },
       p, q);
   return BasicCircle<T>(c, p, orientation);

@@ -57,7 +57,7 @@ BasicPoint<T> closest_point_on_segment(const BasicPoint<T>& a, const BasicPoint<
   //> closest-combine
   const T n = evaluate(N), d = evaluate(D);
   const T ca = b.w() * (d - n), cb = a.w() * n;  // P = ca·a + cb·b, both coefficients > 0
-  return BasicPoint<T>(T(ca * a.w() + cb * b.w()), T(ca * a.x() + cb * b.x()), T(ca * a.y() + cb * b.y()));
+  return mix(ca, a, cb, b);
   //< closest-combine
 }
 

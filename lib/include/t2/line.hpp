@@ -60,10 +60,17 @@ Sign side(const BasicLine<T>& l, const BasicPoint<T>& p) {
                       l.W(), l.X(), l.Y(), p.w(), p.x(), p.y());
 }
 
-/// The line with opposite orientation: same points, sides swapped.
+/// The opposite line ¬l = <-W, -X, -Y>: the same points, the orientation and the sides swapped
+/// (one verb, `opposite`, for segments, circles, directions and rectangles too).
 template <class T>
-BasicLine<T> reverse(const BasicLine<T>& l) {
+BasicLine<T> opposite(const BasicLine<T>& l) {
   return BasicLine<T>(T(-l.W()), T(-l.X()), T(-l.Y()));
+}
+
+/// The old name of `opposite(l)`, kept while code written against it moves (issue 11).
+template <class T>
+[[deprecated("reverse(l) is now opposite(l)")]] BasicLine<T> reverse(const BasicLine<T>& l) {
+  return opposite(l);
 }
 
 /// Equality of oriented lines (up to a positive factor). Exact.

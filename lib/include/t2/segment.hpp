@@ -206,8 +206,7 @@ BasicPoint<T> point_at_infinity(const BasicSegment<T>& s) {
       return detail::exactly<T>(
           [](const ExactPoint& a, const ExactPoint& b) {
             const Integer wa = abs(a.w()), wb = abs(b.w());
-            return ExactPoint(Integer(wb * a.w() + wa * b.w()), Integer(wb * a.x() + wa * b.x()),
-                              Integer(wb * a.y() + wa * b.y()));
+            return mix(wb, a, wa, b);
           },
           p, q);
     }
@@ -270,8 +269,7 @@ SegmentIntersection<T> intersection(const BasicSegment<T>& s, const BasicSegment
             return Integer(det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
           };
           const Integer u = abs(det(ea, eb, ed)), v = abs(det(ea, eb, ec));
-          return ExactPoint(Integer(u * ec.w() + v * ed.w()), Integer(u * ec.x() + v * ed.x()),
-                            Integer(u * ec.y() + v * ed.y()));
+          return mix(u, ec, v, ed);
         },
         a, b, c, d);
   }

@@ -33,7 +33,7 @@ Figure& Figure::add_circle(const Point& c0, const Point& p0, Sign o, Style s) {
     // direction. Proper centre, boundary on Ω: Ω. Either way the centre is on its left when
     // the circle is positive.
     Line l = c.w() == 0 ? join(p, Point(0, -c.y(), c.x())) : Line(c.w() > 0 ? 1 : -1, 0, 0);
-    if (side(l, c) != o) l = reverse(l);
+    if (side(l, c) != o) l = opposite(l);
     if (!s.fill().empty()) s.shade();
     return add(l, std::move(s));
   }

@@ -1,0 +1,14 @@
+#pragma once
+// The scene file named on a command line, as every command that reads one takes it.
+
+#include <string>
+
+#include "t2/scene.hpp"
+
+namespace t2cli {
+
+/// Reads the scene file `file`, or standard input when it is "-" (named <stdin> in messages).
+/// Throws t2::ParseError (file:line: what is wrong) or t2::BadInput when it cannot be read.
+t2::Scene read_scene_argument(const std::string& file);
+
+}  // namespace t2cli
