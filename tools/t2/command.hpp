@@ -37,7 +37,6 @@
 // app.remaining().
 
 #include <functional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -62,22 +61,10 @@ using Action = std::function<int()>;
 /// Declares a command's options on `app` (bound to state the returned Action owns).
 using Setup = Action (*)(CLI::App& app);
 
-/// The arguments after the command name (only for the commands not yet on CLI11; see Command).
-using Args = std::span<const std::string>;
-
 struct Command {
-  /// A command parsed by CLI11 (every command should be one).
-  Command(const char* name, const char* summary, Setup setup) : name(name), summary(summary), setup(setup) {}
-  /// Transitional, until the grader's commands move to CLI11 (issue 11): a command that parses
-  /// its own arguments and prints `help` verbatim for -h/--help. Do not use it for new commands.
-  Command(const char* name, const char* summary, const char* help, int (*run)(Args args))
-      : name(name), summary(summary), help(help), run(run) {}
-
-  const char* name;              ///< the word after `t2`
-  const char* summary;           ///< one line for `t2 --help`
-  Setup setup = nullptr;         ///< declares the options, returns the action
-  const char* help = nullptr;    ///< transitional: the help text of a self-parsing command
-  int (*run)(Args) = nullptr;    ///< transitional: a self-parsing command's entry point
+  const char* name;     ///< the word after `t2`
+  const char* summary;  ///< one line for `t2 --help`
+  Setup setup;          ///< declares the options, returns the action
 };
 
 /// Thrown for bad usage; main prints "t2 NAME: message" and "(see t2 help NAME)", exits 2.

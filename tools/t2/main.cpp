@@ -121,20 +121,7 @@ std::unique_ptr<CLI::App> make_app(const Command& c, Action& action) {
   return app;
 }
 
-// The transitional path of a self-parsing command (see Command).
-int run_self_parsing(const Command& c, const std::vector<std::string>& rest) {
-  if (std::any_of(rest.begin(), rest.end(), [](const std::string& a) { return a == "-h" || a == "--help"; })) {
-    fmt::print("{}", c.help);
-    return kOk;
-  }
-  return c.run(rest);
-}
-
 int print_help(const Command& c) {
-  if (!c.setup) {
-    fmt::print("{}", c.help);
-    return kOk;
-  }
   Action action;
   const auto app = make_app(c, action);
   fmt::print("{}", app->help());
@@ -148,7 +135,6 @@ int usage_error(const Command& c, const std::string& message) {
 
 // Parses the arguments of c, then runs it.
 int dispatch(const Command& c, const std::vector<std::string>& rest) {
-  if (!c.setup) return run_self_parsing(c, rest);
   Action action;
   const auto app = make_app(c, action);
   try {
