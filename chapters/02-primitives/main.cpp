@@ -374,25 +374,38 @@ void figures(const std::filesystem::path& dir) {
   }
   {  // The radius kinds: finite, beyond infinity (same spot, other side), infinite (a line).
     const P c = P::cartesian(1, 1);
-    const t2::ExactCircle finite(c, P::cartesian(3, 1));           // radius 2
-    const t2::ExactCircle beyond(c, P(-1, -4, -1));                // back (4, 1): 3 from c
-    const t2::ExactCircle line(P(0, 1, 1), P::cartesian(-2, 0));   // centre at infinity
-    // Label directions suit the planar picture; on the sphere they are chosen automatically.
+    const t2::ExactCircle finite(c, P::cartesian(3, 1));          // radius 2
+    const t2::ExactCircle beyond(c, P(-1, -4, -1));               // back (4, 1): 3 from c
+    const t2::ExactCircle line(P(0, 1, 1), P::cartesian(-2, 0));  // centre at infinity
+    // Label directions, one set per model, chosen so that no two labels overlap.
     auto circles = [&](bool planar) {
-      const double auto_angle = std::nan("");
       dr::Figure f;
-      f.add(finite, dr::Style().color("#1f77b4").width(2).fill("#9ecae1").arrow().label("finite"));
-      f.add(beyond, dr::Style().color("#d62728").width(2).arrow().label("beyond infinity")
-                        .label_angle(planar ? -20 : auto_angle));
-      f.add(line, dr::Style().color("#2ca02c").width(2).arrow().label("infinite").label_angle(planar ? -45 : auto_angle));
+      f.add(finite, dr::Style().color("#1f77b4").width(2).fill("#9ecae1").arrow().label(
+                        "finite"));
+      f.add(beyond, dr::Style()
+                        .color("#d62728")
+                        .width(2)
+                        .arrow()
+                        .label("beyond infinity")
+                        .label_angle(planar ? -20 : -100));
+      f.add(line, dr::Style()
+                      .color("#2ca02c")
+                      .width(2)
+                      .arrow()
+                      .label("infinite")
+                      .label_angle(planar ? -45 : 170));
       f.add(c, dr::Style().label("c").label_angle(-90));
-      f.add(line.center(), dr::Style().color("#2ca02c").label("centre of the line").label_angle(planar ? 200 : auto_angle));
+      f.add(line.center(), dr::Style()
+                               .color("#2ca02c")
+                               .label("centre of the line")
+                               .label_angle(planar ? 200 : -120));
       return f;
     };
     dr::PlaneView wide = plane;
     wide.half_width = 5;
     written += dr::save(circles(true), wide, dir / "circles-plane.svg");
-    dr::SphereView view = sphere;  // c (at longitude 45) in view, ¬c and the back circle below
+    // c (at longitude 45) in view, ¬c and the back circle below.
+    dr::SphereView view = sphere;
     view.lat = 20;
     view.lon = -5;
     written += dr::save(circles(false), view, dir / "circles-sphere.svg");
