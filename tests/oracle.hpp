@@ -81,12 +81,12 @@ Sign lifted_oracle(const P& a, const P& b, const P& c, const P& d) {
   return sign_oracle(det_oracle<4>({row(a), row(b), row(c), row(d)}));
 }
 
-/// Δ(a, b, c, d) of four points of R³ (rows [x, y, z, 1]): positive when d is below the plane
-/// of a, b, c seen counter-clockwise from above — the sign convention of Shewchuk's orient3d
-/// with the order of rows reversed (see orient3d's comment).
+/// The 4×4 determinant with rows [x, y, z, 1] of four points of R³ (seed 004's formula for
+/// Volume6; it is −(p₃ − p₀)·((p₁ − p₀) × (p₂ − p₀))).
 inline Rational det4_points(const std::array<std::array<double, 3>, 4>& v) {
   std::array<std::array<Rational, 4>, 4> m;
-  for (int i = 0; i < 4; ++i) m[i] = {to_rational(v[i][0]), to_rational(v[i][1]), to_rational(v[i][2]), Rational(1)};
+  for (std::size_t i = 0; i < 4; ++i)
+    m[i] = {to_rational(v[i][0]), to_rational(v[i][1]), to_rational(v[i][2]), Rational(1)};
   return det_oracle<4>(m);
 }
 

@@ -205,22 +205,28 @@ inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(),
 /// filtered for `double` coordinates; for `Integer` coordinates the same filter runs first when
 /// every coordinate has at most 52 bits (they convert to doubles exactly, and the filter's
 /// integer certificate often decides), and GMP integers decide the rest. Only calls on
-/// `double` coordinates are counted in filter_stats().
-template <class F, class... T>
-Sign sign_of_poly(F&& f, const T&... args) {
-  if constexpr ((std::is_same_v<T, double> && ...)) {
-    return filtered_sign(f, args...);
+/// `double` coordinates are counted in filter_stats(). Every coordinate has the same type,
+/// `double` or `Integer`: a mix (say 0.5 and 0) does not compile, since converting it would
+/// change the polynomial (tests/compile_fail). The kernel's own predicates (orient.hpp,
+/// incircle.hpp, orient3d.hpp) take points and have hand-written fast paths instead.
+template <class F, class T, class... U>
+Sign sign_of_poly(F&& f, const T& first, const U&... rest) {
+  static_assert((std::is_same_v<T, U> && ...),
+                "t2::sign_of_poly: every coordinate must have the same number type (double or t2::Integer); "
+                "convert them first, e.g. 0 -> 0.0");
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, Integer>,
+                "t2::sign_of_poly: coordinates are double or t2::Integer");
+  if constexpr (std::is_same_v<T, double>) {
+    return filtered_sign(f, first, rest...);
   } else {
-    if constexpr ((std::is_same_v<T, Integer> && ...)) {
-      if ((detail::fits_filter(args) && ...)) {
-        const Filtered r = f(Filtered(args.get_d())...);
-        const bool in_range = (detail::in_filter_range(args.get_d()) && ...);
-        const int s = certified_sign(r, in_range);
-        if (s != 2) return static_cast<Sign>(s);
-        if (r.mag < 0x1p52) return sign_of(r.v);  // integers, no rounding: exact
-      }
+    if (detail::fits_filter(first) && (detail::fits_filter(rest) && ...)) {
+      const Filtered r = f(Filtered(first.get_d()), Filtered(rest.get_d())...);
+      const bool in_range = detail::in_filter_range(first.get_d()) && (detail::in_filter_range(rest.get_d()) && ...);
+      const int s = certified_sign(r, in_range);
+      if (s != 2) return static_cast<Sign>(s);
+      if (r.mag < 0x1p52) return sign_of(r.v);  // integers, no rounding: exact
     }
-    return exact_sign(f, args...);
+    return exact_sign(f, first, rest...);
   }
 }
 
