@@ -128,7 +128,7 @@ const std::vector<std::string>& trusted_flags() {
 std::vector<std::string> link_libraries(bool with_gtest) {
   std::vector<std::string> l = {library_archive().string()};
   if (with_gtest) l.push_back("-lgtest");
-  for (const char* x : {"-lgmpxx", "-lgmp", "-lfmt", "-lcairo", "-lpthread"}) l.push_back(x);
+  for (const char* x : {"-lgmpxx", "-lgmp", "-lfmt", "-lpthread"}) l.push_back(x);
   return l;
 }
 
@@ -210,8 +210,10 @@ bool read_untrusted(const fs::path& p, std::string& out, size_t cap) {
 
 }  // namespace
 
+// Exercises are written on the kernel (t2::kernel: points, predicates, constructions, no
+// drawing), so student and trusted programs link its archive only.
 fs::path library_archive() {
-  const fs::path a = fs::path(T2_BINARY_DIR) / "lib" / "libt2.a";
+  const fs::path a = fs::path(T2_BINARY_DIR) / "lib" / "libt2_kernel.a";
   if (!fs::exists(a)) throw GraderError(fmt::format("the library {} is not built: run ./build.sh first", a.string()));
   return a;
 }
@@ -241,7 +243,7 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
   if (::geteuid() == 0 && ::chown(out_dir.c_str(), sandbox_uid(), sandbox_uid()) != 0)
     throw GraderError("cannot hand the build folder to the sandbox's user");
   SandboxRun r;
-  r.read_only = {{lib_include_dir(), "/t2/include"}, {src_dir, "/src"}, {library_archive(), "/t2/lib/libt2.a"}};
+  r.read_only = {{lib_include_dir(), "/t2/include"}, {src_dir, "/src"}, {library_archive(), "/t2/lib/libt2_kernel.a"}};
   std::vector<std::string> objs;
   for (size_t i = 0; i < t.driver_objects.size(); ++i) {
     const std::string inside = fmt::format("/t2/obj/part{}.o", i);
@@ -289,7 +291,7 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
   if (sanitized_tool()) link.push_back("-fsanitize=address,undefined");
   link.push_back("/out/student.o");
   link.insert(link.end(), objs.begin(), objs.end());
-  for (auto l : link_libraries(false)) link.push_back(l == library_archive().string() ? "/t2/lib/libt2.a" : l);
+  for (auto l : link_libraries(false)) link.push_back(l == library_archive().string() ? "/t2/lib/libt2_kernel.a" : l);
   link.insert(link.end(), {"-o", "/out/driver"});
   if (!step(link)) {
     b.messages = "the code does not link (a function of " + ex.header + " is missing or defined twice?):\n" + b.messages;
