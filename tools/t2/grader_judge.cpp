@@ -111,9 +111,15 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
   } else if (verdict == "LIMIT") {
     t.what = "output limit";
   } else if (verdict == "GONE" || !cr.ok()) {
-    if (dr.timed_out || dr.signal == SIGXCPU || (cr.timed_out && !dr.ok())) {
+    // Through bubblewrap the CPU limit's SIGXCPU arrives as the exit status 128 + SIGXCPU; a run
+    // that lasted at least the CPU limit tells it from a deliberate, early exit(152).
+    const bool out_of_cpu =
+        dr.signal == SIGXCPU || (dr.exit_code == 128 + SIGXCPU && dr.wall_seconds >= 0.9 * cpu_s);
+    if (dr.timed_out || out_of_cpu || (cr.timed_out && !dr.ok())) {
       t.what = "timed out";
-      if (!t.hidden) t.detail = fmt::format("still running after {:.0f} s (an infinite loop, or waiting for input?)", wall);
+      if (!t.hidden)
+        t.detail = out_of_cpu ? fmt::format("used its {} s of CPU time and was stopped (an infinite loop?)", cpu_s)
+                              : fmt::format("still running after {:.0f} s (an infinite loop, or waiting for input?)", wall);
     } else if (dr.signal != 0 || dr.exit_code > 128) {
       // Through bubblewrap a crash shows as the exit status 128 + signal (an exit(129..192) looks the same).
       t.what = "crashed";
