@@ -182,7 +182,8 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
 #if defined(__SANITIZE_ADDRESS__)
   // An ASan build of t2 builds sandboxed programs with ASan too; LeakSanitizer stops the world
   // with ptrace at exit, which the seccomp filter forbids: no leak check inside the sandbox.
-  s.env->push_back("ASAN_OPTIONS=detect_leaks=0");
+  // And crashes stay crashes: signals are left to kill the program, as in a plain build.
+  s.env->push_back("ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0");
 #endif
   s.out = r.out;
   s.err = r.err;
