@@ -197,9 +197,11 @@ TEST(Delaunay, GenDegenerateKinds) {
   }
 }
 
-TEST(Delaunay, RejectsPointsNotInFront) {
+// Input not all in front takes the T² construction (test_delaunay_t2.cpp); points on Ω among
+// proper points are not implemented.
+TEST(Delaunay, PointsNotInFront) {
   const std::vector<Point> pts = {Point::cartesian(0, 0), Point(-1, 0, 1), Point::cartesian(1, 0)};
-  EXPECT_THROW(delaunay(pts), Undefined);
+  EXPECT_EQ(delaunay(pts).validate(), "");
   const std::vector<Point> inf = {Point::cartesian(0, 0), Point::at_infinity(0, 1), Point::cartesian(1, 0)};
   EXPECT_THROW(delaunay(inf), Undefined);
 }

@@ -2,6 +2,7 @@
 #include "t2/triangulation/triangulation.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 
@@ -78,6 +79,27 @@ void Triangulation::flip(Index t, int i) {
 }
 //< flip
 
+void Triangulation::assemble(const std::vector<std::array<Index, 3>>& triangles) {
+  v_.assign(3 * triangles.size(), 0);
+  n_.assign(3 * triangles.size(), none);
+  std::unordered_map<std::uint64_t, Index> edges;  // directed edge u → v -> its half-edge
+  edges.reserve(3 * triangles.size());
+  auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
+  for (Index t = 0; t < triangles.size(); ++t) {
+    set(t, triangles[t][0], triangles[t][1], triangles[t][2]);
+    for (int i = 0; i < 3; ++i)  // the half-edge 3t + i is the edge vertex(i+1) → vertex(i+2)
+      if (!edges.emplace(key(triangles[t][next(i)], triangles[t][prev(i)]), 3 * t + i).second)
+        throw std::logic_error("Triangulation::assemble: a directed edge occurs twice");
+  }
+  for (Index t = 0; t < triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const auto it = edges.find(key(triangles[t][prev(i)], triangles[t][next(i)]));
+      if (it == edges.end()) throw std::logic_error("Triangulation::assemble: an edge has no opposite");
+      n_[3 * t + i] = it->second;
+    }
+  dimension_ = 2;
+}
+
 void Triangulation::rename_vertex(Index t, Index from, Index to) {
   const Index start = t;
   do {
@@ -140,10 +162,16 @@ std::string Triangulation::validate() const {
     const Index u = f / 3;
     if (v_[3 * t + next(i)] != v_[3 * u + prev(j)] || v_[3 * t + prev(i)] != v_[3 * u + next(j)])
       return "twin edges with different endpoints at half-edge " + std::to_string(e);
-    if (i == 0 && !is_infinite(t) && orient(points_[v_[e]], points_[v_[e + 1]], points_[v_[e + 2]]) != POSITIVE)
-      return "triangle " + std::to_string(t) + " is not counter-clockwise";
+    if (i == 0 && !is_infinite(t)) {
+      const Point &a = points_[v_[e]], &b = points_[v_[e + 1]], &c = points_[v_[e + 2]];
+      const Sign o = orient(a, b, c);
+      const bool antipodal = a == antipode(b) || b == antipode(c) || c == antipode(a);
+      if (o == NEGATIVE || (o == ZERO && !antipodal))
+        return "triangle " + std::to_string(t) + " is not counter-clockwise";
+    }
   }
-  if (count[np] == 0) return "v∞ is not a vertex";
+  if (count[np] == 0 && std::all_of(points_.begin(), points_.end(), [](const Point& p) { return p.w() > 0; }))
+    return "v∞ is not a vertex";  // front points always have a hull
   // Each vertex's triangles form one cycle (its star), so no vertex is pinched.
   std::vector<Index> first(points_.size() + 1, none);
   for (Index e = 0; e < v_.size(); ++e) {
@@ -163,6 +191,7 @@ std::string Triangulation::validate() const {
     if (steps != count[v]) return "the triangles around vertex " + std::to_string(v) + " are not one cycle";
   }
   if (size() != 2 * std::size_t(vertices) - 4) return "Euler's formula fails: T != 2V - 4";
+  if (count[np] == 0 && size() == 0) return "no triangle in dimension 2";
   // No two vertices at the same point.
   std::vector<Index> used;
   for (Index v = 0; v < np; ++v)

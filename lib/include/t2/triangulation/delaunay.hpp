@@ -39,15 +39,10 @@
 ///    their order, so the triangle set is the same for every permutation of the input, and it
 ///    is the one CGAL's `Delaunay_triangulation_2` computes (the tests compare them).
 ///
-/// **T² input: not implemented yet.** Only front points (w > 0) are accepted; any point on the
-/// back side or on Ω throws `Undefined`. Seed 000 §5.3 extends the insertion to T²: while all
-/// points lie in an open hemisphere the hull exists and the structure above works unchanged
-/// (orient is exact on homogeneous points); when an insertion destroys the hull, the new point
-/// takes the place of v∞ in every infinite triangle and the triangulation covers the sphere;
-/// inserting the antipode of a hull vertex creates a segment between antipodes (the seed's
-/// figure 5.18). None of this is here: it needs the empty-circle criterion for triangles with
-/// vertices on both sides or on Ω (chapter 10 must define it so that the triangulation is dual
-/// to the Voronoi diagram of chapter 11), since `in_circle` is undefined for such triangles.
+/// **T² input.** When some point is not in front (w ≤ 0), `delaunay` builds the dual of the
+/// T² Voronoi diagram instead (delaunay_t2.hpp: the planar triangulations of each side, merged
+/// along Ω, with the empty-circle predicate of face_circle.hpp for faces on both sides). Front
+/// input never takes that path, so its result is the planar one above, unchanged.
 ///
 /// **Memory.** While building: a copy of the points in insertion order (24 bytes a point), the
 /// order itself (4), the triangles (2 per point, 24 bytes each: 48), reserved exactly once. The
@@ -129,13 +124,9 @@ bool in_conflict(const K& k, const Triangulation& tr, Triangulation::Index t, co
   return ap != ZERO && ap == pb;  // strictly between a and b on their line
 }
 
-/// Checks that every point is on the front side (the planar Delaunay triangulation).
-inline void require_front(std::span<const Point> points) {
-  for (std::size_t k = 0; k < points.size(); ++k)
-    if (points[k].w() <= 0)
-      throw Undefined("delaunay: point " + std::to_string(k) + " = " + to_string(points[k]) +
-                      " is not on the front side (w > 0); the triangulation of T2 input is not implemented");
-}
+/// The triangulation of T² input (defined in delaunay_t2.hpp, included at the end).
+template <class K>
+Triangulation delaunay_t2(std::span<const Point> input, const K& kernel);
 
 /// Degenerate input: dimension 0 or 1 (no triangle); duplicates found by sorting.
 template <class K>
@@ -158,14 +149,15 @@ void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>
 }  // namespace detail
 
 //> delaunay
-/// The Delaunay triangulation of front points (w > 0) with the predicates of kernel K; see the
-/// file comment for the algorithm and the rule on degenerate input. Throws `Undefined` for a
-/// point that is not on the front side, `BadInput` for more than 715 827 882 points (32-bit
-/// half-edge indices).
+/// The Delaunay triangulation of points of T² with the predicates of kernel K; see the file
+/// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
+/// not all in front. Throws `Undefined` for a point on Ω among proper points (not implemented),
+/// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
 template <class K = DelaunayKernel>
 Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   using Index = Triangulation::Index;
-  detail::require_front(input);
+  if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }))
+    return detail::delaunay_t2(input, kernel);
   if (input.size() > Triangulation::none / 6)  // half-edges 3t + i of 2n triangles fit 32 bits
     throw BadInput("delaunay: more than " + std::to_string(Triangulation::none / 6) + " points");
   // The triangulation is built on a copy of the points in insertion order (vertex m is the m-th
@@ -247,3 +239,5 @@ inline Triangulation delaunay(const std::vector<Point>& points) { return delauna
 //< delaunay
 
 }  // namespace t2
+
+#include "t2/triangulation/delaunay_t2.hpp"  // IWYU pragma: export

@@ -14,15 +14,20 @@
 ///
 /// **Invariants** (checked by `valid()`, which the tests call after every construction):
 ///  1. Every triangle (a, b, c) with three finite vertices turns counter-clockwise:
-///     orient(a, b, c) > 0 (exact). Vertex i is opposite the edge (vertex(t, i+1), vertex(t, i+2)),
-///     indices mod 3.
+///     orient(a, b, c) > 0 (exact), or — only in a triangulation of T² input (delaunay_t2.hpp) —
+///     orient(a, b, c) = 0 with two of a, b, c antipodal (the degenerate faces of seed 000's
+///     figure 5.18, lunes bounded by two half great circles). Vertex i is opposite the edge
+///     (vertex(t, i+1), vertex(t, i+2)), indices mod 3.
 ///  2. `twin` is an involution without fixed points: twin(twin(e)) = e, and the edge opposite
 ///     e in its triangle has the same endpoints as the edge opposite twin(e), in reverse order.
-///  3. While dimension() == 2, v∞ (`infinite`) is a vertex: every hull edge a → b
+///  3. While dimension() == 2 and the points lie in an open hemisphere (always for front
+///     points), v∞ (`infinite`) is a vertex: every hull edge a → b
 ///     (counter-clockwise around the hull) is the finite edge of exactly one *infinite
 ///     triangle* (b, a, v∞), so the triangles form a triangulated sphere: with n vertices
 ///     (v∞ included) there are 2n − 4 triangles and 3n − 6 edges (Euler). An infinite triangle
 ///     (a, b, v∞) stands for the open half-plane to the left of a → b, outside the hull.
+///     When no hull exists (T² input not in an open hemisphere) there is no v∞ and the finite
+///     triangles alone form the triangulated sphere, with the same counts (v∞ not counted).
 ///  4. No vertex appears twice (duplicates are merged before they become vertices).
 ///
 /// **The remembering stochastic walk** (Devillers, Pion and Teillaud, "Walking in a
@@ -143,6 +148,12 @@ class Triangulation {
   template <class Orient>
   Location locate(const Point& p, Index start, Orient&& orient, std::uint32_t& rng) const;
 
+  /// Replaces the triangles by `triangles` (vertex triples, `infinite` allowed) and links their
+  /// twins by matching each directed edge u → v with the edge v → u of another triangle; sets
+  /// dimension 2. Throws `std::logic_error` when an edge has no unique opposite (the triples do
+  /// not form a closed oriented surface). Used by the constructions that assemble a
+  /// triangulation from pieces (delaunay_t2.hpp).
+  void assemble(const std::vector<std::array<Index, 3>>& triangles);
   /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
   /// `from`); used when a duplicate of smaller index arrives.
   void rename_vertex(Index t, Index from, Index to);

@@ -1,0 +1,293 @@
+// t2::delaunay on T² input (points on both sides, antipodal pairs, all on Ω) against a brute-force
+// O(n⁴) construction with the same exact predicate (in_face_circle), and exact certificates:
+// structure and Euler (validate), every face's disk empty, every point a vertex or a duplicate,
+// the hull edges (when a hull exists) a convex hull, and the triangles tiling the sphere or the
+// hull — the number of faces containing random points, counted with exact orientations, is 1.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "delaunay_certificates.hpp"
+#include "delaunay_inputs.hpp"
+#include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/face_circle.hpp"
+
+namespace t2 {
+namespace {
+
+using testing::Tri;
+using testing::triangle_set;
+using Index = Triangulation::Index;
+
+bool flat(const Point& a, const Point& b, const Point& c) { return orient(a, b, c) == ZERO; }
+
+/// n random points in [-1, 1)², each behind with probability `back` (drawn at the same place).
+std::vector<Point> random_sides(std::size_t n, double back, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1), coin(0, 1);
+  std::vector<Point> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = u(rng), y = u(rng);
+    out.push_back(coin(rng) < back ? Point(-1, -x, -y) : Point::cartesian(x, y));
+  }
+  return out;
+}
+
+/// The counter-clockwise triples of distinct points whose disk (in_face_circle) holds no point:
+/// the faces of the Delaunay triangulation by definition, in O(n⁴).
+std::vector<Tri> brute_force(const std::vector<Point>& p) {
+  std::vector<Tri> out;
+  const Index n = static_cast<Index>(p.size());
+  for (Index a = 0; a < n; ++a)
+    for (Index b = 0; b < n; ++b)
+      for (Index c = 0; c < n; ++c) {
+        if (!(a < b && a < c) || b == c || orient(p[a], p[b], p[c]) != POSITIVE) continue;
+        bool empty = true;
+        for (Index d = 0; d < n && empty; ++d)
+          if (d != a && d != b && d != c && in_face_circle(p[a], p[b], p[c], p[d]) == POSITIVE) empty = false;
+        if (empty) out.push_back({a, b, c});
+      }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// The finite faces that turn counter-clockwise (the flat antipodal faces left out).
+std::vector<Tri> proper_faces(const Triangulation& tr) {
+  std::vector<Tri> out;
+  for (const Tri& t : triangle_set(tr))
+    if (!flat(tr.point(t[0]), tr.point(t[1]), tr.point(t[2]))) out.push_back(t);
+  return out;
+}
+
+/// The certificates of the file comment; `samples` random points for the tiling count.
+void expect_t2_delaunay(const Triangulation& tr, std::size_t samples = 200) {
+  ASSERT_EQ(tr.validate(), "");
+  ASSERT_EQ(tr.dimension(), 2);
+  const auto& p = tr.points();
+  std::vector<char> vertex(p.size(), 0), dropped(p.size(), 0);
+  for (const Tri& t : tr.finite_triangles())
+    for (Index v : t) vertex[v] = 1;
+  for (auto [d, k] : tr.duplicates()) {
+    EXPECT_TRUE(p[d] == p[k]);
+    EXPECT_LT(k, d);
+    dropped[d] = 1;
+  }
+  for (std::size_t v = 0; v < p.size(); ++v) EXPECT_NE(vertex[v] != 0, dropped[v] != 0) << "point " << v;
+  bool any_flat = false;
+  for (const Tri& t : tr.finite_triangles()) {
+    any_flat = any_flat || flat(p[t[0]], p[t[1]], p[t[2]]);
+    for (std::size_t d = 0; d < p.size(); ++d)
+      ASSERT_NE(in_face_circle(p[t[0]], p[t[1]], p[t[2]], p[d]), POSITIVE)
+          << "point " << d << " inside the disk of " << t[0] << " " << t[1] << " " << t[2];
+  }
+  const auto hull = tr.hull_edges();
+  for (auto [a, b] : hull)
+    for (std::size_t d = 0; d < p.size(); ++d) ASSERT_NE(orient(p[a], p[b], p[d]), NEGATIVE) << "outside the hull";
+  // Tiling: every face turns counter-clockwise, so the faces cover the sphere (or the hull) a
+  // constant number of times; count it at random points of T².
+  const auto q = random_sides(samples, 0.5, p.size() + 17);
+  for (const Point& s : q) {
+    bool on_boundary = false, outside = false;
+    for (auto [a, b] : hull) outside = outside || orient(p[a], p[b], s) != POSITIVE;
+    int count = 0;
+    for (const Tri& t : tr.finite_triangles()) {
+      if (flat(p[t[0]], p[t[1]], p[t[2]])) continue;
+      const Sign o0 = orient(p[t[1]], p[t[2]], s), o1 = orient(p[t[2]], p[t[0]], s), o2 = orient(p[t[0]], p[t[1]], s);
+      if (o0 < 0 || o1 < 0 || o2 < 0) continue;
+      if (o0 == 0 || o1 == 0 || o2 == 0) on_boundary = true;
+      ++count;
+    }
+    if (on_boundary) continue;
+    if (any_flat)  // the flat faces (lunes) cover the rest
+      EXPECT_LE(count, 1) << "a point covered twice: " << to_string(s);
+    else
+      EXPECT_EQ(count, !hull.empty() && outside ? 0 : 1) << "point " << to_string(s);
+  }
+}
+
+void expect_brute_force(const std::vector<Point>& pts) {
+  const Triangulation tr = delaunay(pts);
+  expect_t2_delaunay(tr);
+  EXPECT_EQ(proper_faces(tr), brute_force(pts));
+}
+
+// Random points on both sides: with and without a hull (both must occur), with flat faces
+// when the input happens to hold none of them.
+TEST(DelaunayT2, BothSidesSmallAgainstBruteForce) {
+  int with_hull = 0, sphere = 0;
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    const auto pts = random_sides(4 + seed % 11, 0.1 + 0.8 * double(seed % 7) / 6, seed);
+    SCOPED_TRACE(seed);
+    expect_brute_force(pts);
+    (delaunay(pts).hull_edges().empty() ? sphere : with_hull)++;
+  }
+  EXPECT_GT(with_hull, 10);
+  EXPECT_GT(sphere, 50);
+}
+
+// gen's both-sides: all points in an open hemisphere across Ω, so the hull exists and v∞ stays.
+TEST(DelaunayT2, HullAcrossOmegaAgainstBruteForce) {
+  int mixed = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    gen::Options o;
+    o.n = 4 + seed % 12;
+    o.seed = seed;
+    o.back = 0.2 + 0.1 * double(seed % 5);
+    const auto pts = gen::points(gen::Kind::both_sides, o);
+    SCOPED_TRACE(seed);
+    expect_brute_force(pts);
+    if (std::any_of(pts.begin(), pts.end(), [](const Point& p) { return p.w() > 0; }) &&
+        std::any_of(pts.begin(), pts.end(), [](const Point& p) { return p.w() < 0; })) {
+      EXPECT_FALSE(delaunay(pts).hull_edges().empty());
+      ++mixed;
+    }
+  }
+  EXPECT_GT(mixed, 50);
+}
+
+TEST(DelaunayT2, LargeBothSides) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    expect_t2_delaunay(delaunay(random_sides(2000, 0.3 * double(seed), seed)), 100);
+    gen::Options o;
+    o.n = 2000;
+    o.seed = seed;
+    expect_t2_delaunay(delaunay(gen::points(gen::Kind::both_sides, o)), 100);
+  }
+}
+
+// No hull: the triangles cover the whole sphere, v∞ is gone, Euler with n vertices: 2n − 4.
+TEST(DelaunayT2, SphereWithoutHull) {
+  const std::vector<Point> pts = {Point::cartesian(0, 0), Point::cartesian(1, 0), Point::cartesian(0, 1),
+                                  Point(-1, 0.2, 0.3), Point(-1, -0.9, 0.1), Point(-1, 0.3, -0.8)};
+  const Triangulation tr = delaunay(pts);
+  expect_t2_delaunay(tr);
+  EXPECT_TRUE(tr.hull_edges().empty());
+  EXPECT_EQ(tr.size(), 2 * pts.size() - 4);
+  EXPECT_EQ(proper_faces(tr), brute_force(pts));
+}
+
+// The seed's figure 5.18: the antipode of a hull vertex v. The two faces beside the segment
+// v ¬v are flat (orient 0), and that segment crosses Ω in v's normal cone.
+TEST(DelaunayT2, AntipodeOfHullVertex) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    auto pts = testing::gen_points(gen::Kind::uniform, 5 + seed % 15, seed);
+    const Triangulation front = delaunay(pts);
+    const Index v = front.hull_edges()[seed % front.hull_edges().size()].first;
+    pts.push_back(antipode(pts[v]));
+    const Triangulation tr = delaunay(pts);
+    SCOPED_TRACE(seed);
+    expect_t2_delaunay(tr);
+    EXPECT_TRUE(tr.hull_edges().empty());
+    int flats = 0;
+    for (const Tri& t : tr.finite_triangles())
+      if (flat(pts[t[0]], pts[t[1]], pts[t[2]])) {
+        ++flats;
+        EXPECT_TRUE(std::count(t.begin(), t.end(), v) == 1 && std::count(t.begin(), t.end(), Index(pts.size() - 1)) == 1);
+      }
+    EXPECT_EQ(flats, 2);
+    EXPECT_EQ(proper_faces(tr), brute_force(pts));
+    // A later point behind, near the antipode: still a valid triangulation (figures 5.19-5.20).
+    pts.push_back(Point(-1, -pts[v].x() / pts[v].w() * 1.5, -pts[v].y() / pts[v].w() * 1.5 - 0.25));
+    expect_t2_delaunay(delaunay(pts));
+  }
+}
+
+TEST(DelaunayT2, GenAntipodal) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    gen::Options o;
+    o.n = seed == 1 ? 12 : 1000;
+    o.seed = seed;
+    const auto pts = gen::points(gen::Kind::antipodal, o);
+    expect_t2_delaunay(delaunay(pts), 100);
+    if (pts.size() <= 20) {
+      EXPECT_EQ(proper_faces(delaunay(pts)), brute_force(pts));
+    }
+  }
+}
+
+// Behind only: the mirror of the front triangulation (each triangle reversed), with v∞.
+TEST(DelaunayT2, BackOnlyIsTheMirror) {
+  const auto front = testing::gen_points(gen::Kind::uniform, 500, 3);
+  std::vector<Point> back;
+  for (const Point& p : front) back.push_back(antipode(p));
+  const Triangulation tr = delaunay(back);
+  expect_t2_delaunay(tr);
+  std::vector<Tri> mirrored;
+  for (const Tri& t : delaunay(front).finite_triangles()) mirrored.push_back({t[0], t[2], t[1]});
+  std::sort(mirrored.begin(), mirrored.end());
+  EXPECT_EQ(triangle_set(tr), mirrored);
+}
+
+TEST(DelaunayT2, IndependentOfOrderAndDuplicatesMerged) {
+  auto pts = random_sides(300, 0.4, 5);
+  for (std::size_t k = 0; k < 40; ++k) pts.push_back(Point(2 * pts[k].w(), 2 * pts[k].x(), 2 * pts[k].y()));
+  std::vector<Index> perm(pts.size());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::shuffle(perm.begin(), perm.end(), std::mt19937_64(6));
+  std::vector<Point> shuffled;
+  for (Index k : perm) shuffled.push_back(pts[k]);
+  const Triangulation a = delaunay(pts), b = delaunay(shuffled);
+  expect_t2_delaunay(a, 50);
+  expect_t2_delaunay(b, 50);
+  EXPECT_EQ(a.duplicates().size(), 40u);
+  std::vector<Tri> renamed;
+  for (const Tri& t : b.finite_triangles()) renamed.push_back(testing::renamed(t, perm));
+  std::sort(renamed.begin(), renamed.end());
+  // The kept point of an equal pair may differ with the order: compare up to duplicates.
+  std::vector<Index> canon(pts.size());
+  std::iota(canon.begin(), canon.end(), 0);
+  for (auto [d, k] : a.duplicates()) canon[d] = k;
+  for (Tri& t : renamed) t = testing::renamed(t, canon);
+  std::sort(renamed.begin(), renamed.end());
+  EXPECT_EQ(triangle_set(a), renamed);
+}
+
+// All points on Ω lie on one line of T²: no triangle (dimension 1), duplicates merged.
+TEST(DelaunayT2, AllOnOmegaIsCollinear) {
+  std::vector<Point> pts;
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 50; ++k) pts.push_back(Point::at_infinity(u(rng), u(rng)));
+  pts.push_back(Point(0, 4 * pts[4].x(), 4 * pts[4].y()));  // exact: a power of two
+  pts.push_back(antipode(pts[7]));  // a different point
+  const Triangulation tr = delaunay(pts);
+  EXPECT_EQ(tr.dimension(), 1);
+  EXPECT_TRUE(tr.finite_triangles().empty());
+  ASSERT_EQ(tr.duplicates().size(), 1u);
+  EXPECT_EQ(tr.duplicates()[0], (std::pair<Index, Index>(50, 4)));
+  const Triangulation one = delaunay(std::vector<Point>{Point::at_infinity(1, 2), Point::at_infinity(2, 4)});
+  EXPECT_EQ(one.dimension(), 0);
+  // A front point, its antipode and a point between on their line: collinear too.
+  const std::vector<Point> line = {Point::cartesian(1, 1), Point(-1, -1, -1), Point::at_infinity(1, 1),
+                                   Point::cartesian(2, 2)};
+  EXPECT_EQ(delaunay(line).dimension(), 1);
+}
+
+TEST(DelaunayT2, OmegaAmongProperPointsIsUndefined) {
+  gen::Options o;
+  o.n = 20;
+  EXPECT_THROW(delaunay(gen::points(gen::Kind::infinity, o)), Undefined);
+}
+
+// The predicate's Ω rule is the limit of its rules on both sides.
+TEST(DelaunayT2, FaceCircleAtInfinityIsTheLimit) {
+  const Point x = Point::cartesian(1, 0), y = Point::cartesian(0, 1), z(-1, -0.2, -0.1);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 200; ++k) {
+    const double dx = u(rng), dy = u(rng);
+    const Sign at_inf = in_face_circle(x, y, z, Point::at_infinity(dx, dy));
+    EXPECT_EQ(in_face_circle(x, y, z, Point(1e-9, dx, dy)), at_inf);   // front, far in (dx, dy)
+    EXPECT_EQ(in_face_circle(x, y, z, Point(-1e-9, dx, dy)), at_inf);  // back, drawn far in -(dx, dy)
+    EXPECT_EQ(in_face_circle(z, x, y, Point::at_infinity(dx, dy)), at_inf);  // rotation invariant
+  }
+  EXPECT_THROW(in_face_circle(x, y, Point::at_infinity(1, 0), z), Undefined);
+}
+
+}  // namespace
+}  // namespace t2
