@@ -12,13 +12,15 @@ enum class Shape {
   ray_front,    ///< one end on Ω, the other on the front: a front ray
   ray_back,     ///< one end on Ω, the other on the back: a back ray
   at_infinity,  ///< both ends on Ω: an arc of Ω itself
+  point,        ///< p = q: the one-point segment {p} (as in chapter 02 and in CGAL)
 };
 
-/// The shape of segment pq. Throws t2::Undefined when p = q or q = ¬p (no segment is defined).
+/// The shape of segment pq. p = q is allowed (Shape::point); throws t2::Undefined when q = ¬p
+/// (no segment is defined).
 Shape shape(const t2::Point& p, const t2::Point& q);
 
-/// True when r lies on the closed segment pq of T² (p ≠ ±q is guaranteed by the caller).
-/// Must be exact for every finite double.
+/// True when r lies on the closed segment pq of T² (q ≠ ¬p is guaranteed by the caller; when
+/// p = q the segment is the one point p). Must be exact for every finite double.
 bool contains(const t2::Point& p, const t2::Point& q, const t2::Point& r);
 
 }  // namespace ex02

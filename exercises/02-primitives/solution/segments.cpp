@@ -1,7 +1,8 @@
 // Exercise 02, reference solution. The segment pq is the set of points αp + βq with α, β ≥ 0
 // (not both zero). For r on the line of p and q, with n = p × q, Cramer's rule gives
 // α |n|² = (r × q)·n and β |n|² = (p × r)·n, so r is on the segment iff both dot products are
-// ≥ 0: two polynomials of degree 4, whose signs t2::sign_of_poly computes exactly.
+// ≥ 0: two polynomials of degree 4, whose signs t2::sign_of_poly computes exactly. When p = q,
+// p × q = 0 and the segment is the one point p.
 #include "segments.hpp"
 
 #include <t2/filter.hpp>
@@ -10,8 +11,8 @@
 namespace ex02 {
 
 Shape shape(const t2::Point& p, const t2::Point& q) {
-  if (p == q) throw t2::Undefined("segment(p, q) is undefined when p = q");
   if (p == t2::antipode(q)) throw t2::Undefined("segment(p, q) is undefined when q = antipode(p)");
+  if (p == q) return Shape::point;
   const int a = p.w() > 0 ? 1 : (p.w() < 0 ? -1 : 0), b = q.w() > 0 ? 1 : (q.w() < 0 ? -1 : 0);
   if (a == 0 && b == 0) return Shape::at_infinity;
   if (a == 0 || b == 0) return a + b > 0 ? Shape::ray_front : Shape::ray_back;
@@ -20,6 +21,7 @@ Shape shape(const t2::Point& p, const t2::Point& q) {
 }
 
 bool contains(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+  if (p == q) return r == p;  // the one-point segment (p × q = 0: Cramer's rule says nothing)
   if (t2::orient(p, q, r) != t2::ZERO) return false;
   // (u × v)·(s × t) by the Binet–Cauchy identity: (u·s)(v·t) − (u·t)(v·s).
   const auto coef = [](const auto& u0, const auto& u1, const auto& u2, const auto& v0, const auto& v1,

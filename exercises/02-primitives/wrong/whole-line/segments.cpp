@@ -7,7 +7,8 @@
 namespace ex02 {
 
 Shape shape(const t2::Point& p, const t2::Point& q) {
-  if (p == q || p == t2::antipode(q)) throw t2::Undefined("segment(p, q) is undefined when p = ±q");
+  if (p == t2::antipode(q)) throw t2::Undefined("segment(p, q) is undefined when q = antipode(p)");
+  if (p == q) return Shape::point;
   const int a = p.w() > 0 ? 1 : (p.w() < 0 ? -1 : 0), b = q.w() > 0 ? 1 : (q.w() < 0 ? -1 : 0);
   if (a == 0 && b == 0) return Shape::at_infinity;
   if (a == 0 || b == 0) return a + b > 0 ? Shape::ray_front : Shape::ray_back;
