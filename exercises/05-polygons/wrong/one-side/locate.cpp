@@ -1,4 +1,6 @@
-// Exercise 05, reference solution.
+// Wrong on purpose: exact, and right for every polygon whose vertices are all on one side (the
+// exercise's first version), but it is planar ray casting: it takes the polygon for a front (or
+// back) polygon even when its vertices are on both sides and its edges cross Ω.
 // 1. A back polygon is the antipodal image of a front one, and the antipodal map reverses
 //    orientation: locate(P, q) = -locate(¬P, ¬q). So only front polygons remain.
 // 2. A front polygon bounds a region R of the front sheet. Points off the front (on Ω or on the
