@@ -354,7 +354,7 @@ std::vector<std::string> all_secret_lines() {
     }
     if (!it->is_regular_file()) continue;
     const std::string s = rel.string();
-    if (std::regex_search(s, std::regex("^exercises/[^/]+/(solution|hidden|wrong)/")))
+    if (std::regex_search(s, std::regex("^exercises/[^/]+/((solution|hidden|wrong)/|answers\\.md$)")))
       secret_files.push_back(it->path());
     else if (s.rfind("exercises/_", 0) != 0 && s.rfind("tests/test_grader", 0) != 0 && s.rfind("tests/test_exercises", 0) != 0)
       pub += slurp(it->path());
@@ -381,6 +381,12 @@ TEST(Release, StudentTreeHoldsNothingSecret) {
                         "exercises/harness/checker_main.cpp", "exercises/01-t2-plane/classify.cpp",
                         "exercises/01-t2-plane/test_public.cpp", "exercises/05-polygons/README.md"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  // The pen-and-paper questions are there, their worked answers are not.
+  for (const char* ch : {"01-t2-plane", "02-primitives", "03-predicates", "04-robustness", "05-polygons"}) {
+    ASSERT_TRUE(fs::exists(kExercises / ch / "answers.md")) << ch << ": the source tree has worked answers";
+    EXPECT_NE(slurp(out / "exercises" / ch / "README.md").find("## Pen-and-paper questions"), std::string::npos) << ch;
+    EXPECT_FALSE(fs::exists(out / "exercises" / ch / "answers.md")) << ch;
+  }
   // Nothing secret, by name ...
   for (auto it = fs::recursive_directory_iterator(out); it != fs::recursive_directory_iterator(); ++it) {
     const std::string s = it->path().lexically_relative(out).string();
@@ -420,6 +426,7 @@ TEST(Release, AutograderBundleAndClassroomConfig) {
     EXPECT_NE(l.out.find(f), std::string::npos) << f << "\n" << l.out;
   EXPECT_EQ(l.out.find("/solution/"), std::string::npos) << "reference solutions are not needed to grade";
   EXPECT_EQ(l.out.find("/wrong/"), std::string::npos);
+  EXPECT_EQ(l.out.find("answers.md"), std::string::npos) << "worked answers stay with the instructor";
   const Ran ra = run("unzip -p '" + zip.string() + "' run_autograder");
   EXPECT_NE(ra.out.find("/autograder/results/results.json"), std::string::npos) << ra.out;
 

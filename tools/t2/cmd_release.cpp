@@ -101,10 +101,12 @@ int autograder(const fs::path& zip, const std::optional<std::string>& exercise) 
     }
   } cleanup{tmpl};
   t2grader::copy_tree(source_root(), stage, false);
-  // Reference and wrong solutions are not needed to grade: leave them out of the bundle too.
+  // Reference and wrong solutions and the worked answers are not needed to grade: leave them
+  // out of the bundle too.
   for (const auto& e : t2grader::all_exercises(stage / "exercises")) {
     fs::remove_all(e.dir / "solution");
     fs::remove_all(e.dir / "wrong");
+    fs::remove(e.dir / "answers.md");
   }
   fs::remove_all(stage / "exercises" / "_hostile");
   fs::remove_all(stage / "exercises" / "_template");

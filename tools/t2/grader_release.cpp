@@ -48,6 +48,8 @@ bool is_secret_path(const fs::path& rel) {
   if (parts[0] == "exercises" && parts.size() >= 2) {
     if (parts[1] == "_hostile" || parts[1] == "_template") return true;
     if (parts.size() >= 3 && (parts[2] == "solution" || parts[2] == "hidden" || parts[2] == "wrong")) return true;
+    // The worked answers of the pen-and-paper questions (the questions are in README.md).
+    if (parts.size() == 3 && parts[2] == "answers.md") return true;
   }
   if (parts[0] == "tests" && parts.size() == 2) {
     const std::string& f = parts[1];
