@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "model_picture.hpp"
 #include "scene_argument.hpp"
 #include "t2/draw.hpp"
 #include "t2/hull.hpp"
@@ -45,16 +45,7 @@ std::string picture(const std::vector<t2::Point>& P, const std::vector<std::size
   for (const auto& p : P) f.add(p, dr::Style().color("#7f7f7f").layer(1));
   for (std::size_t k = 0; k < hull.size(); ++k)
     f.add(P[hull[k]], dr::Style().color("#000000").label(fmt::format("p{}", hull[k])).layer(2));
-  double r = 0;  // the planar view holds every finite point
-  for (const auto& p : P)
-    if (p.w() != 0 && std::isfinite(std::hypot(p.x() / p.w(), p.y() / p.w())))
-      r = std::max(r, std::hypot(p.x() / p.w(), p.y() / p.w()));
-  dr::PlaneView plane;
-  plane.half_width = std::max(1.0, 1.2 * r);
-  const dr::SphereView sphere;
-  if (model == "plane") return dr::render(f, plane);
-  if (model == "sphere") return dr::render(f, sphere);
-  return dr::render_both(f, plane, sphere);
+  return render_models(f, P, model);
 }
 
 int hull(const Options& o) {

@@ -1,0 +1,36 @@
+// t2 delaunay: the Delaunay triangulation of a scene's points (t2/triangulation/delaunay.hpp,
+// incremental; lawson.hpp, flips).
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+#include "command.hpp"
+#include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/lawson.hpp"
+#include "triangles_command.hpp"
+
+namespace t2cli {
+namespace {
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<TrianglesOptions>();
+  o->algorithm = "incremental";
+  app.description(
+      "Prints the Delaunay triangulation of the points of the scene file FILE (- for standard\n"
+      "input). Cocircular points are triangulated as if perturbed (chapter 10), so the answer\n"
+      "is unique and every algorithm gives the same triangles.");
+  app.add_option("--algorithm", o->algorithm,
+                 "incremental (default: randomized incremental with a spatial sort) or flip\n"
+                 "(Lawson: the sweep triangulation, then flips)")
+      ->type_name("A")
+      ->check(CLI::IsMember({"incremental", "flip"}));
+  return triangles_setup(app, o, "delaunay", [](std::span<const t2::Point> P, const TrianglesOptions& opt) {
+    return opt.algorithm == "flip" ? t2::delaunay_by_flips(P) : t2::delaunay(P);
+  });
+}
+
+}  // namespace
+
+T2_COMMAND({"delaunay", "the Delaunay triangulation of a scene's points (index triples)", setup});
+
+}  // namespace t2cli

@@ -1,0 +1,27 @@
+// t2 triangulate: a triangulation of a scene's points (t2/triangulation/triangulate.hpp).
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+#include "command.hpp"
+#include "t2/triangulation/triangulate.hpp"
+#include "triangles_command.hpp"
+
+namespace t2cli {
+namespace {
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<TrianglesOptions>();
+  app.description(
+      "Prints a triangulation of the points of the scene file FILE (- for standard input): the\n"
+      "sweep of chapter 09 (points sorted by x, then y; each added outside the hull of the\n"
+      "previous ones). Every point is a vertex; the triangles are not Delaunay (t2 delaunay).");
+  return triangles_setup(app, o, "triangulate",
+                         [](std::span<const t2::Point> P, const TrianglesOptions&) { return t2::triangulate(P); });
+}
+
+}  // namespace
+
+T2_COMMAND({"triangulate", "a triangulation of a scene's points (triangles as index triples)", setup});
+
+}  // namespace t2cli
