@@ -101,13 +101,31 @@ TEST_F(TrianglesCli, BadAndUndefinedInput) {
   EXPECT_EQ(r.status, 2);
   r = t2("delaunay - --algorithm divide", "0 0\n");
   EXPECT_EQ(r.status, 2);
-  for (const char* c : {"delaunay", "triangulate"}) {
-    r = t2(std::string(c) + " - --svg out.svg", "0 0\n1 0\n-1 -2 -3\n");  // a back point
+  // A back point: the sweep and Lawson take front points only; a point on Omega among proper
+  // points is not implemented by the incremental algorithm either.
+  for (const char* c : {"triangulate", "delaunay --algorithm flip"}) {
+    r = t2(std::string(c) + " - --svg out.svg", "0 0\n1 0\n-1 -2 -3\n");
     EXPECT_EQ(r.status, 3) << c;
     EXPECT_TRUE(has(r.err, "undefined in T2: <stdin>: ")) << r.err;
     EXPECT_TRUE(r.out.empty());
   }
+  r = t2("delaunay - --svg out.svg", "0 0\n1 0\n0 1 1\n");
+  EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_TRUE(files().empty());  // no picture of an undefined answer
+}
+
+// Points on both sides, with and without a hull (antipodal pairs): the library's triangles,
+// drawn without error.
+TEST_F(TrianglesCli, BothSidesOfT2) {
+  for (const char* kind : {"both-sides", "antipodal"}) {
+    ASSERT_EQ(t2(std::string("gen ") + kind + " --n 60 --seed 2 -o pts.t2").status, 0);
+    std::vector<Point> P;
+    for (const auto& p : read_scene((dir_ / "pts.t2").string()).points) P.push_back(p.point);
+    const Result r = t2("delaunay pts.t2 --svg d.svg");
+    ASSERT_EQ(r.status, 0) << kind << r.err;
+    EXPECT_EQ(parse(r.out), sorted(delaunay(P).finite_triangles())) << kind;
+    EXPECT_TRUE(has(slurp(dir_ / "d.svg"), "<svg"));
+  }
 }
 
 TEST_F(TrianglesCli, Picture) {

@@ -18,7 +18,9 @@ Action setup(CLI::App& app) {
   app.description(
       "Prints the Delaunay triangulation of the points of the scene file FILE (- for standard\n"
       "input). Cocircular points are triangulated as if perturbed (chapter 10), so the answer\n"
-      "is unique and every algorithm gives the same triangles.");
+      "is unique and every algorithm gives the same triangles. Points on both sides of T2 give\n"
+      "the dual of the T2 Voronoi diagram (incremental only), which covers the whole sphere\n"
+      "when the points have no hull.");
   app.add_option("--algorithm", o->algorithm,
                  "incremental (default: randomized incremental with a spatial sort) or flip\n"
                  "(Lawson: the sweep triangulation, then flips)")

@@ -42,7 +42,17 @@ std::string listing(const t2::Triangulation& tr, bool infinite) {
 std::string picture(const std::vector<t2::Point>& P, const t2::Triangulation& tr, const std::string& model) {
   dr::Figure f;
   const dr::Style tri = dr::Style().color("#1f77b4").width(1).fill("#1f77b4").fill_opacity(0.12).layer(0);
-  for (const auto& t : tr.finite_triangles()) f.add(std::vector<t2::Point>{P[t[0]], P[t[1]], P[t[2]]}, tri);
+  for (const auto& t : tr.finite_triangles()) {
+    const t2::Point &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
+    if (!(a == t2::antipode(b)) && !(b == t2::antipode(c)) && !(c == t2::antipode(a))) {
+      f.add(std::vector<t2::Point>{a, b, c}, tri);
+      continue;
+    }
+    // A flat face of T² input (two antipodal vertices): its segment between the antipodes is
+    // not defined by its endpoints, so only its other edges are drawn.
+    for (int k = 0; k < 3; ++k)
+      if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]))) f.segment(P[t[k]], P[t[(k + 1) % 3]], tri);
+  }
   for (auto [a, b] : tr.hull_edges()) f.segment(P[a], P[b], dr::Style().color("#2ca02c").width(2).layer(1));
   const bool labels = P.size() <= 60;
   for (std::size_t k = 0; k < P.size(); ++k) {
@@ -92,8 +102,9 @@ Action triangles_setup(CLI::App& app, std::shared_ptr<TrianglesOptions> o, const
       "first, the lines sorted. Equal points are merged (stderr names them) and the smallest\n"
       "index is the vertex; collinear points give no triangle.\n"
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 undefined\n"
-      "in T2 (for now: a point on the back side or on Omega, whose triangulation is not\n"
-      "implemented).");
+      "in T2 or not implemented: t2 triangulate and --algorithm flip take front points only,\n"
+      "t2 delaunay takes points on both sides, or all on Omega, but not points on Omega\n"
+      "together with others.");
   return [o, command, build] { return run(*o, command, build); };
 }
 
