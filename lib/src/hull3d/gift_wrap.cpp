@@ -53,7 +53,6 @@ std::vector<std::uint32_t> planar_hull(std::span<const Point3> P, std::vector<st
 
 }  // namespace
 
-//> gift-wrap
 Facets gift_wrap_3d(std::span<const Point3> P) {
   require_finite(P);
   const std::vector<std::uint32_t> ids = distinct_points(P);  // lexicographic order
@@ -89,6 +88,7 @@ Facets gift_wrap_3d(std::span<const Point3> P) {
     }
     facets.push_back(std::move(f));
   };
+  //> gift-wrap
   add(facet(p0, p1, p2));
   while (!free_edges.empty()) {
     const auto [f, k] = free_edges.front();
@@ -101,9 +101,9 @@ Facets gift_wrap_3d(std::span<const Point3> P) {
       if (p == a ? orient3d(f0, f1, f2, P[q]) == NEGATIVE : orient3d(P[b], P[a], P[p], P[q]) == POSITIVE) p = q;
     add(facet(b, a, p));
   }
+  //< gift-wrap
   canonicalize(facets);
   return facets;
 }
-//< gift-wrap
 
 }  // namespace t2

@@ -21,7 +21,6 @@ namespace {
 
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-//> hull3-face
 // Face (v0, v1, v2), counter-clockwise seen from outside; nb[k] is the face across the edge
 // v[k] -> v[k+1]; `head` starts the list of the points waiting on this face (they see it).
 struct Face {
@@ -31,7 +30,6 @@ struct Face {
   std::uint32_t visible_at = 0, hidden_at = 0;  // insertion stamps of the visibility search
   bool alive = true;
 };
-//< hull3-face
 
 class Builder {
  public:
@@ -80,9 +78,9 @@ class Builder {
     }
   }
 
-  //> hull3-insert
   // Inserts p, which sees the face it waits on.
   void insert(std::uint32_t p) {
+    //> hull3-insert
     ++stamp_;
     visible_.assign(1, conflict_[p]);
     F_[conflict_[p]].visible_at = stamp_;
@@ -113,6 +111,7 @@ class Builder {
       F_[h].nb[1] = next;
       F_[next].nb[2] = h;
     }
+    //< hull3-insert
     conflict_[p] = kNone;
     for (std::uint32_t f : visible_) {  // hand the waiting points over, delete the face
       for (std::uint32_t q = F_[f].head, after; q != kNone; q = after) {
@@ -130,7 +129,6 @@ class Builder {
       free_.push_back(f);
     }
   }
-  //< hull3-insert
 
   std::vector<Triangle3> triangles() const {
     std::vector<Triangle3> T;

@@ -19,7 +19,6 @@ Point3 lift(const Point& p) {
   return {x, y, s};
 }
 
-//> delaunay-by-lifting
 std::vector<Triangle3> delaunay_by_lifting(std::span<const Point> points) {
   std::vector<Point3> lifted;
   lifted.reserve(points.size());
@@ -34,6 +33,5 @@ std::vector<Triangle3> delaunay_by_lifting(std::span<const Point> points) {
   std::sort(out.begin(), out.end());
   return out;
 }
-//< delaunay-by-lifting
 
 }  // namespace t2

@@ -21,7 +21,13 @@
 namespace t2 {
 
 /// The Platonic solids.
-enum class Platonic { tetrahedron, cube, octahedron, dodecahedron, icosahedron };
+enum class Platonic {
+  tetrahedron,   ///< 4 triangles, 3 at a vertex
+  cube,          ///< 6 squares, 3 at a vertex
+  octahedron,    ///< 8 triangles, 4 at a vertex
+  dodecahedron,  ///< 12 pentagons, 3 at a vertex
+  icosahedron,   ///< 20 triangles, 5 at a vertex
+};
 
 /// All five, in the order of the enumeration.
 const std::vector<Platonic>& all_platonic();
