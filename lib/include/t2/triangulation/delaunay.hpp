@@ -194,6 +194,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   std::vector<Index> stack;
   std::uint32_t rng = 2463534242u;
   Index last = 0;
+  //> delaunay-loop
   for (Index m = 3; m < n; ++m) {
     const Index p = next_point();
     const Triangulation::Location loc = tr.locate(
@@ -226,6 +227,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
       stack.push_back(3 * u);
     }
   }
+  //< delaunay-loop
   tr.renumber(order, input);
   tr.finish();
   return tr;

@@ -201,6 +201,7 @@ class Triangulation {
 
 template <class Orient>
 Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& orient, std::uint32_t& rng) const {
+  //> walk
   int from = -1;  // the slot of the edge we came through: p is strictly inside it
   for (;;) {
     const Index* v = &v_[3 * t];
@@ -233,6 +234,7 @@ Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& 
     if (zeros == 1) return {Location::edge, t, o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2};
     return {Location::vertex, t, o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2};  // the vertex off both lines
   }
+  //< walk
 }
 
 }  // namespace t2

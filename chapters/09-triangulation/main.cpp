@@ -1,0 +1,179 @@
+// Chapter 09: triangulations. The counts of Euler's formula, the operations of the flat
+// structure (insertion in a face, on an edge, outside the hull, the flip), the sweep of
+// t2/triangulation/triangulate.hpp, and the remembering walk on a Delaunay triangulation and on
+// the sweep's; the figures of the chapter in both models (seed 000, figures 5.12-5.17 redrawn).
+#include <t2/t2.hpp>
+#include <t2/gen/generate.hpp>
+#include <t2/triangulation/delaunay.hpp>
+#include <t2/triangulation/triangulate.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace dr = t2::draw;
+using t2::Point;
+using t2::Triangulation;
+using Index = Triangulation::Index;
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::logic_error(std::string("chapter 09: check failed: ") + what);
+}
+
+// Ten front points, no three collinear, no four cocircular.
+std::vector<Point> small_set() {
+  //> small-set
+  return {Point::cartesian(0, 0),    Point::cartesian(4, -1),  Point::cartesian(7, 1),   Point::cartesian(2, 3),
+          Point::cartesian(5, 4),    Point::cartesian(8, 5),   Point::cartesian(1, 6),   Point::cartesian(4, 8),
+          Point::cartesian(6.5, 7.5), Point::cartesian(3.5, 1.5)};
+  //< small-set
+}
+
+std::string triangles(const Triangulation& tr) {
+  auto t = tr.finite_triangles();
+  std::sort(t.begin(), t.end());
+  std::string s;
+  for (const auto& x : t) s += " (" + std::to_string(x[0]) + " " + std::to_string(x[1]) + " " + std::to_string(x[2]) + ")";
+  return s;
+}
+
+void counts() {
+  std::cout << "== a triangulation of ten points (the sweep)\n";
+  //> counts
+  const std::vector<Point> P = small_set();
+  const Triangulation tr = t2::triangulate(P);
+  const std::size_t n = P.size(), h = tr.hull_edges().size(), t = tr.finite_triangles().size();
+  std::cout << "n = " << n << " points, h = " << h << " on the hull\n";
+  std::cout << "triangles: " << t << " = 2n - h - 2 = " << 2 * n - h - 2 << "\n";
+  std::cout << "with v-infinity: " << tr.size() << " triangles = 2(n + 1) - 4 = " << 2 * (n + 1) - 4 << "\n";
+  std::cout << "triangles:" << triangles(tr) << "\n";
+  //< counts
+  require(t == 2 * n - h - 2 && tr.size() == 2 * (n + 1) - 4 && tr.valid(), "Euler");
+  std::cout << "\n";
+}
+
+void operations() {
+  std::cout << "== the operations, one after the other\n";
+  //> operations
+  const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(4, 0), Point::cartesian(2, 4),
+                                Point::cartesian(2, 1), Point::cartesian(3, 2), Point::cartesian(5, 3)};
+  Triangulation tr(P);
+  tr.make_triangle(0, 1, 2);  // t0 = (0 1 2) and three infinite triangles
+  std::cout << "make_triangle:" << triangles(tr) << "\n";
+  tr.insert_in_face(0, 3);  // p3 = (2, 1) lies inside t0
+  std::cout << "insert_in_face p3:" << triangles(tr) << "\n";
+  const Index t = 4;  // (3 1 2): its edge opposite p3 (slot 0) is the segment p1 p2, which holds p4
+  tr.insert_on_edge(t, 0, 4);
+  std::cout << "insert_on_edge p4:" << triangles(tr) << "\n";
+  // p5 = (5, 3) is outside the hull, beyond the edge p1 p4: insert it in that infinite triangle.
+  Index f = 0;
+  while (tr.slot(f, Triangulation::infinite) < 0 || !t2::detail::sees_hull_edge(tr, f, P[5])) ++f;
+  tr.insert_in_face(f, 5);
+  std::cout << "p5 into the infinite triangle " << f << ":" << triangles(tr) << "\n";
+  const Index n = static_cast<Index>(tr.size());
+  for (Index g : {f, n - 2, n - 1})  // the new infinite triangles: remove the reflex angles at p5
+    if (tr.vertex(g, 1) == Triangulation::infinite || tr.vertex(g, 2) == Triangulation::infinite)
+      t2::detail::flip_hull_chain(tr, g);
+  std::cout << "after step 35:" << triangles(tr) << "\n";
+  std::cout << "valid: " << (tr.valid() ? "yes" : "no") << ", hull edges: " << tr.hull_edges().size() << "\n";
+  //< operations
+  require(tr.valid(), "operations");
+  std::cout << "\n";
+}
+
+// The walk, counting its orientation tests, from triangle 0 to every query point.
+double walk_cost(const Triangulation& tr, const std::vector<Point>& queries) {
+  std::uint64_t tests = 0;
+  std::uint32_t rng = 12345;
+  for (const Point& q : queries) {
+    const auto loc = tr.locate(q, 0, [&](const Point& a, const Point& b, const Point& c) {
+      ++tests;
+      return t2::orient(a, b, c);
+    }, rng);
+    require(loc.t != Triangulation::none, "located");
+  }
+  return double(tests) / double(queries.size());
+}
+
+void walks() {
+  std::cout << "== the remembering walk: orientation tests per query, 1000 queries\n";
+  //> walks
+  t2::gen::Options o;
+  o.seed = 9;
+  for (std::size_t n : {1000, 10000, 100000}) {
+    o.n = n;
+    const std::vector<Point> P = t2::gen::points(t2::gen::Kind::uniform, o);
+    o.n = 1000;
+    const std::vector<Point> Q = t2::gen::points(t2::gen::Kind::uniform, o);
+    std::cout << "n = " << n << ": Delaunay " << int(walk_cost(t2::delaunay(P), Q))
+              << ", sweep " << int(walk_cost(t2::triangulate(P), Q)) << "\n";
+  }
+  //< walks
+  std::cout << "\n";
+}
+
+void figures(const std::filesystem::path& dir) {
+  int written = 0, count = 0;
+  dr::PlaneView plane;
+  plane.half_width = 5;
+  dr::SphereView sphere;
+  sphere.lat = 40;
+  sphere.lon = -20;
+  // The points are drawn scaled and shifted so that the set sits around the centre of the views.
+  auto shifted = [](const std::vector<Point>& P) {
+    std::vector<Point> out;
+    for (const Point& p : P) out.push_back(Point::cartesian(p.x() / p.w() / 2 - 2.5, p.y() / p.w() / 2 - 2));
+    return out;
+  };
+  // The finite triangles (those at a marked vertex in orange), extra segments, labelled points.
+  auto draw = [&](const Triangulation& tr, const std::vector<Point>& P, Index marked,
+                  const std::vector<std::pair<Index, Index>>& extra, const std::string& name) {
+    dr::Figure f;
+    const auto S = shifted(P);
+    for (const auto& t : tr.finite_triangles()) {
+      const bool hot = t[0] == marked || t[1] == marked || t[2] == marked;
+      f.add(std::vector<Point>{S[t[0]], S[t[1]], S[t[2]]},
+            dr::Style().color("#1f77b4").fill(hot ? "#ff7f0e" : "#1f77b4").fill_opacity(hot ? 0.35 : 0.1));
+    }
+    for (auto [a, b] : extra) f.segment(S[a], S[b], dr::Style().color("#ff7f0e").width(1.6));
+    double cx = 0, cy = 0;  // labels point away from the centre of the set
+    for (const Point& p : S) cx += p.x() / double(S.size()), cy += p.y() / double(S.size());
+    for (std::size_t k = 0; k < S.size(); ++k)
+      f.add(S[k], dr::Style().label("p" + std::to_string(k))
+                      .label_angle(std::atan2(S[k].y() - cy, S[k].x() - cx) * 180 / 3.141592653589793));
+    written += dr::save(f, plane, dir / (name + "-plane.svg"));
+    written += dr::save(f, sphere, dir / (name + "-sphere.svg"));
+    count += 2;
+  };
+  const std::vector<Point> P = small_set();
+  draw(t2::triangulate(P), P, Triangulation::none, {}, "sweep");
+  // Seed 000, figures 5.16 and 5.17: p9 outside the hull of the others. Inserted in the infinite
+  // triangle of one hull edge it sees, it gets two edges (5.16); the flips of Algorithm 9 then
+  // join it to every hull vertex it sees (5.17).
+  std::vector<Point> Q(P.begin(), P.end() - 1);
+  Q.push_back(Point::cartesian(10.5, 2.5));
+  const Triangulation base = t2::triangulate(std::vector<Point>(Q.begin(), Q.end() - 1));
+  std::vector<std::pair<Index, Index>> first_edges;
+  for (auto [a, b] : base.hull_edges())
+    if (first_edges.empty() && t2::orient(Q[a], Q[b], Q[9]) < 0) first_edges = {{a, 9}, {b, 9}};
+  draw(base, Q, Triangulation::none, first_edges, "outside-before");
+  draw(t2::triangulate(Q), Q, 9, {}, "outside-after");
+  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::filesystem::path dir = dr::figures_dir(argc, argv, T2_FIGURES_DIR);
+  counts();
+  operations();
+  walks();
+  figures(dir);
+}

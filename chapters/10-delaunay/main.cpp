@@ -1,0 +1,271 @@
+// Chapter 10: the Delaunay triangulation. The seed's claim that maximising the minimum height
+// is the same as maximising the minimum angle, refuted (a counterexample and the rate on random
+// convex quadrilaterals); legal edges; Lawson's flips and how many; the randomized incremental
+// construction and its flips per point; the figures of the chapter in both models.
+#include <t2/t2.hpp>
+#include <t2/gen/generate.hpp>
+#include <t2/triangulation/delaunay.hpp>
+#include <t2/triangulation/lawson.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace dr = t2::draw;
+using t2::Point;
+using t2::Triangulation;
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::logic_error(std::string("chapter 10: check failed: ") + what);
+}
+
+struct P2 {
+  double x, y;
+};
+
+//> quality
+// The smallest angle and the smallest height of the triangle a b c (doubles: an illustration).
+double min_angle(P2 a, P2 b, P2 c) {
+  auto at = [](P2 o, P2 p, P2 q) {
+    return std::abs(std::atan2((p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x),
+                               (p.x - o.x) * (q.x - o.x) + (p.y - o.y) * (q.y - o.y)));
+  };
+  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
+}
+double min_height(P2 a, P2 b, P2 c) {  // twice the area over the longest side
+  const double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  return area2 / std::max({std::hypot(b.x - a.x, b.y - a.y), std::hypot(c.x - b.x, c.y - b.y),
+                           std::hypot(a.x - c.x, a.y - c.y)});
+}
+// Which diagonal of the convex quadrilateral q0 q1 q2 q3 each rule keeps: 0 for q0 q2, 1 for q1 q3.
+int by_angle(const std::array<P2, 4>& q) {
+  return std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3])) >=
+                 std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3])) ? 0 : 1;
+}
+int by_height(const std::array<P2, 4>& q) {
+  return std::min(min_height(q[0], q[1], q[2]), min_height(q[0], q[2], q[3])) >=
+                 std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3])) ? 0 : 1;
+}
+//< quality
+
+// The exact Delaunay choice for the counter-clockwise convex quadrilateral: q0 q2 when q3 is
+// outside the circle of q0 q1 q2.
+int by_circle(const std::array<P2, 4>& q) {
+  const Point a = Point::cartesian(q[0].x, q[0].y), b = Point::cartesian(q[1].x, q[1].y),
+              c = Point::cartesian(q[2].x, q[2].y), d = Point::cartesian(q[3].x, q[3].y);
+  return t2::in_circle(a, b, c, d) < 0 ? 0 : 1;
+}
+
+bool convex_ccw(const std::array<P2, 4>& q) {
+  for (int i = 0; i < 4; ++i) {
+    const P2 a = q[i], b = q[(i + 1) % 4], c = q[(i + 2) % 4];
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) return false;
+  }
+  return true;
+}
+
+std::array<P2, 4> counterexample() {
+  // The first convex quadrilateral with small integer corners (in this search order) where the
+  // rules disagree and both margins are clear, not rounding noise.
+  for (int x1 = 1; x1 <= 8; ++x1)
+    for (int y3 = 1; y3 <= 8; ++y3)
+      for (int x2 = 1; x2 <= 8; ++x2)
+        for (int y2 = 1; y2 <= 8; ++y2) {
+          const std::array<P2, 4> q{{{0, 0}, {double(x1), 0}, {double(x2), double(y2)}, {0, double(y3)}}};
+          if (!convex_ccw(q) || by_angle(q) == by_height(q)) continue;
+          const double a0 = std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3]));
+          const double a1 = std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3]));
+          const double h0 = std::min(min_height(q[0], q[1], q[2]), min_height(q[0], q[2], q[3]));
+          const double h1 = std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3]));
+          if (std::abs(a0 - a1) > 0.02 && std::abs(h0 - h1) > 0.02) return q;
+        }
+  throw std::logic_error("no counterexample");
+}
+
+void heights() {
+  std::cout << "== max-min angle against max-min height (seed 000, section 5.3.1)\n";
+  const auto q = counterexample();
+  std::cout << std::fixed << std::setprecision(2);
+  //> counterexample
+  std::cout << "quadrilateral q0..q3:";
+  for (const P2& p : q) std::cout << " (" << p.x << ", " << p.y << ")";
+  std::cout << "\n";
+  const double deg = 180 / std::acos(-1.0);
+  const double a02 = std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3])) * deg;
+  const double a13 = std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3])) * deg;
+  const double h02 = std::min(min_height(q[0], q[1], q[2]), min_height(q[0], q[2], q[3]));
+  const double h13 = std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3]));
+  std::cout << "diagonal q0 q2: min angle " << a02 << " deg, min height " << h02 << "\n";
+  std::cout << "diagonal q1 q3: min angle " << a13 << " deg, min height " << h13 << "\n";
+  std::cout << "max-min angle keeps q" << by_angle(q) << " q" << by_angle(q) + 2 << ", max-min height keeps q"
+            << by_height(q) << " q" << by_height(q) + 2 << ", the empty circle keeps q" << by_circle(q) << " q"
+            << by_circle(q) + 2 << "\n";
+  //< counterexample
+  require(by_angle(q) == by_circle(q) && by_height(q) != by_angle(q), "counterexample");
+  //> rate
+  std::mt19937_64 rng(10);
+  auto u = [](std::mt19937_64& g) { return double(g() >> 11) * 0x1p-53; };  // uniform in [0, 1), exact
+  int convex = 0, differ = 0, angle_not_circle = 0;
+  while (convex < 100000) {
+    std::array<P2, 4> r;
+    for (P2& p : r) p = {u(rng), u(rng)};
+    if (!convex_ccw(r)) continue;
+    ++convex;
+    differ += by_angle(r) != by_height(r);
+    angle_not_circle += by_angle(r) != by_circle(r);
+  }
+  std::cout << "random convex quadrilaterals: " << convex << ", the rules differ on " << differ << " (1 in "
+            << std::setprecision(1) << double(convex) / differ << ")\n";
+  std::cout << "max-min angle against the empty circle: " << angle_not_circle << " differences\n";
+  //< rate
+  std::cout << std::setprecision(2) << "\n";
+}
+
+void lawson() {
+  std::cout << "== Lawson's flips\n";
+  //> lawson-counts
+  t2::gen::Options o;
+  o.seed = 10;
+  for (std::size_t n : {1000, 10000, 100000}) {
+    o.n = n;
+    const std::vector<Point> P = t2::gen::points(t2::gen::Kind::uniform, o);
+    Triangulation tr = t2::triangulate(P);
+    const std::size_t flips = t2::flip_to_delaunay(tr);
+    const bool same = tr.finite_triangles().size() == t2::delaunay(P).finite_triangles().size();
+    std::cout << "uniform n = " << n << ": " << flips << " flips (" << double(flips) / n << " per point)"
+              << (same ? "" : " DIFFERS") << "\n";
+  }
+  for (int n : {50, 100, 200}) {  // two rows: the sweep's zigzag needs a quadratic number
+    std::vector<Point> P;
+    for (int k = 0; k < n; ++k) {
+      P.push_back(Point::cartesian(k, 0));
+      P.push_back(Point::cartesian(k + 0.5, 1000.0 * n - k));
+    }
+    Triangulation tr = t2::triangulate(P);
+    std::cout << "two rows of " << n << ": " << t2::flip_to_delaunay(tr) << " flips\n";
+  }
+  //< lawson-counts
+  std::cout << "\n";
+}
+
+// Counts the flips of the incremental algorithm through its trace hooks.
+struct Counting : t2::DelaunayKernel {
+  std::size_t* flips;
+  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++*flips; }
+};
+
+void incremental() {
+  std::cout << "== the randomized incremental construction: flips per inserted point\n";
+  //> incremental-counts
+  t2::gen::Options o;
+  o.seed = 11;
+  for (const char* kind : {"uniform", "normal", "kuzmin"}) {
+    o.n = 100000;
+    const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
+    std::size_t flips = 0;
+    const Triangulation tr = t2::delaunay_with(std::span<const Point>(P), Counting{{}, &flips});
+    std::cout << kind << ": " << double(flips) / double(P.size()) << " flips per point, "
+              << tr.finite_triangles().size() << " triangles\n";
+  }
+  //< incremental-counts
+  std::cout << "\n";
+}
+
+void figures(const std::filesystem::path& dir) {
+  int written = 0, count = 0;
+  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
+    written += dr::save(f, pv, dir / (name + "-plane.svg"));
+    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
+    count += 2;
+  };
+  dr::SphereView sphere;
+  sphere.lat = 40;
+  sphere.lon = -20;
+  {  // The counterexample: the Delaunay diagonal (green) and the max-min height one (red, dashed).
+    const auto q = counterexample();
+    double cx = 0, cy = 0;
+    for (const P2& p : q) cx += p.x / 4, cy += p.y / 4;
+    std::vector<Point> Q;
+    for (const P2& p : q) Q.push_back(Point::cartesian(1.2 * (p.x - cx), 1.2 * (p.y - cy)));
+    dr::Figure f;
+    f.add(Q, dr::Style().color("#1f77b4").width(1.6).fill("#1f77b4").fill_opacity(0.08));
+    const int a = by_angle(q), h = by_height(q);
+    f.add(t2::circle_through(Q[a], Q[a + 1], Q[(a + 2) % 4]), dr::Style().color("#999999").dash({3, 3}));
+    f.segment(Q[a], Q[a + 2], dr::Style().color("#2ca02c").width(2));
+    f.segment(Q[h], Q[h + 2], dr::Style().color("#d62728").width(2).dash({5, 3}));
+    for (int k = 0; k < 4; ++k) f.add(Q[k], dr::Style().label("q" + std::to_string(k)));
+    dr::PlaneView pv;
+    pv.half_width = 3.5;
+    save(f, "heights", pv, sphere);
+  }
+  {  // Forty points: the sweep's triangulation and the Delaunay triangulation after the flips.
+    t2::gen::Options o;
+    o.n = 40;
+    o.seed = 3;
+    std::vector<Point> P = t2::gen::points(t2::gen::Kind::uniform, o);
+    for (Point& p : P) p = Point::cartesian(2 * p.x() / p.w(), 2 * p.y() / p.w());
+    dr::PlaneView pv;
+    pv.half_width = 3;
+    for (const bool flipped : {false, true}) {
+      Triangulation tr = t2::triangulate(P);
+      if (flipped) t2::flip_to_delaunay(tr);
+      dr::Figure f;
+      for (const auto& t : tr.finite_triangles())
+        f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
+              dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.08));
+      for (const Point& p : P) f.add(p, dr::Style().size(2.5));
+      save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
+    }
+  }
+  // Seed 000, figures 5.21 and 5.18 redrawn with the library's T² Delaunay triangulation: points
+  // on both sides, and the antipode of a hull vertex added to front points (a flat face).
+  auto t2_figure = [&](const std::vector<Point>& P, const std::string& name, const dr::PlaneView& pv) {
+    const Triangulation tr = t2::delaunay(P);
+    dr::Figure f;
+    const dr::Style st = dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.08);
+    for (const auto& t : tr.finite_triangles()) {
+      bool flat = false;
+      for (int k = 0; k < 3; ++k) flat = flat || P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]);
+      if (!flat) f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]}, st);
+      for (int k = 0; k < 3 && flat; ++k)  // a flat face: only its edges between non-antipodes
+        if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]])))
+          f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color("#d62728").width(1.6));
+    }
+    for (std::size_t k = 0; k < P.size(); ++k) f.add(P[k], dr::Style().label("p" + std::to_string(k)));
+    save(f, name, pv, sphere);
+  };
+  {
+    t2::gen::Options o;
+    o.n = 16;
+    o.seed = 4;
+    o.back = 0.4;
+    dr::PlaneView pv;
+    pv.half_width = 1.6;
+    t2_figure(t2::gen::points(t2::gen::Kind::both_sides, o), "both-sides", pv);
+    const std::vector<Point> A = {Point::cartesian(-1, -1), Point::cartesian(1.5, -1), Point::cartesian(0.5, 1.5),
+                                  Point::cartesian(0, 0), t2::antipode(Point::cartesian(1.5, -1))};
+    pv.half_width = 2.5;
+    t2_figure(A, "antipode", pv);
+  }
+  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::filesystem::path dir = dr::figures_dir(argc, argv, T2_FIGURES_DIR);
+  heights();
+  lawson();
+  incremental();
+  figures(dir);
+}
