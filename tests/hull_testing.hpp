@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 
 namespace t2::testing {
@@ -29,6 +30,14 @@ inline bool same_cycle(const std::vector<Point>& a, const std::vector<Point>& b)
     if (all) return true;
   }
   return false;
+}
+
+/// The polygon of a generator kind (simple-, star-, convex-, monotone-polygon).
+inline Polygon polygon_of(gen::Kind k, std::size_t n, std::uint64_t seed) {
+  gen::Options o;
+  o.n = n;
+  o.seed = seed;
+  return gen::polygon(k, o);
 }
 
 inline std::vector<Point> at(const std::vector<Point>& P, const std::vector<std::size_t>& idx) {

@@ -1,0 +1,87 @@
+// t2 kernel: the kernel of a scene's polygon block (t2/hull/polygon_kernel.hpp), the points that
+// see all of the polygon. "Kernel" here is the polygon's, not the predicate kernel of the library.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "model_picture.hpp"
+#include "scene_argument.hpp"
+#include "t2/hull/polygon_kernel.hpp"
+#include "t2/io.hpp"
+
+namespace t2cli {
+namespace {
+
+namespace dr = t2::draw;
+
+struct Options {
+  std::string file, svg, model = "both";
+};
+
+int polygon_kernel(const Options& o) {
+  const t2::Scene scene = read_scene_argument(o.file);
+  if (scene.polygons.empty()) throw t2::BadInput(fmt::format("{}: t2 kernel needs a polygon block, the file has none", scene.name));
+  if (scene.polygons.size() > 1)
+    throw t2::ParseError(scene.name, scene.polygons[1].line, "t2 kernel takes one polygon block, this is a second one");
+  const t2::ScenePolygon& block = scene.polygons[0];
+  std::vector<t2::Point> V;
+  for (const auto& v : block.vertices) V.push_back(v.point);
+  t2::PolygonKernel K;
+  try {
+    K = t2::polygon_kernel(V);
+  } catch (const t2::BadInput& e) {
+    throw t2::ParseError(scene.name, block.line, e.what());
+  }
+  std::vector<t2::Point> corners;
+  for (const auto& v : K.vertices) corners.push_back(t2::normalized(t2::to_double(v)));
+  const char* kind = K.empty()                  ? "empty"
+                     : K.vertices.size() == 1   ? "point"
+                     : K.vertices.size() == 2   ? "segment"
+                     : K.bounded()              ? "bounded"
+                                                : "unbounded";
+  std::string out = fmt::format("{}\n", kind);
+  for (const auto& c : corners) out += fmt::format("{} {} {}\n", t2::to_string(c.w()), t2::to_string(c.x()), t2::to_string(c.y()));
+  if (!o.svg.empty()) {
+    dr::Figure f;
+    f.add(V, dr::Style().color("#000000").width(1.5).layer(1));
+    const dr::Style green = dr::Style().color("#2ca02c").width(2).layer(0);
+    if (corners.size() >= 3) f.add(corners, dr::Style(green).fill("#2ca02c"));
+    if (corners.size() == 2) f.segment(corners[0], corners[1], green);
+    if (corners.size() == 1) f.add(corners[0], dr::Style(green).label("kernel"));
+    t2::write_file_atomically(o.svg, render_models(f, V, o.model));
+  }
+  fmt::print("{}", out);
+  return kOk;
+}
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Prints the kernel of the polygon block of the scene file FILE (- for standard input):\n"
+      "the points of the polygon that see every point of it. The polygon's vertices are front\n"
+      "points or points of Omega (an unbounded polygon), its interior on the left of its edges\n"
+      "(a front-only polygon given clockwise is read backwards). First line: empty, point,\n"
+      "segment, bounded or unbounded; then the kernel's corners counter-clockwise, one per\n"
+      "line as 'w x y' (normalized, rounded once from the exact corner). Corners with w = 0\n"
+      "are points of Omega: there the kernel runs off to infinity, and consecutive corners on\n"
+      "Omega are joined along Omega.");
+  app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
+  app.add_option("--svg", o->svg, "also draw the polygon and its kernel to OUT (SVG, atomically)")->type_name("OUT");
+  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
+      ->type_name("M")
+      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  app.footer(
+      "Exit status: 0 done (an empty kernel too); 2 bad usage or bad input (file:line: what\n"
+      "is wrong), e.g. no polygon block or more than one, or a vertex on the back side.");
+  return [o] { return polygon_kernel(*o); };
+}
+
+}  // namespace
+
+T2_COMMAND({"kernel", "the kernel of a scene's polygon (the points that see all of it)", setup});
+
+}  // namespace t2cli

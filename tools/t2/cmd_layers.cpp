@@ -1,0 +1,85 @@
+// t2 layers: the convex layers of a scene's points (t2/hull/layers.hpp), one line per layer.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "model_picture.hpp"
+#include "scene_argument.hpp"
+#include "t2/hull/layers.hpp"
+#include "t2/io.hpp"
+
+namespace t2cli {
+namespace {
+
+namespace dr = t2::draw;
+
+struct Options {
+  std::string file, method = "jarvis", svg, model = "both";
+};
+
+int layers(const Options& o) {
+  const t2::Scene scene = read_scene_argument(o.file);
+  std::vector<t2::Point> P;
+  for (const auto& p : scene.points) P.push_back(p.point);
+  std::vector<std::vector<std::size_t>> L;
+  try {
+    L = t2::convex_layers(P, o.method == "graham" ? t2::LayersMethod::graham : t2::LayersMethod::jarvis);
+  } catch (const t2::NoHull& e) {
+    throw t2::Undefined(fmt::format("{}: no convex layers: {}", scene.name, e.what()));
+  }
+  if (!o.svg.empty()) {
+    static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
+    dr::Figure f;
+    for (std::size_t j = 0; j < L.size(); ++j) {
+      std::vector<t2::Point> h;
+      for (std::size_t i : L[j]) h.push_back(P[i]);
+      const dr::Style s = dr::Style().color(colours[j % 6]).width(2).layer(0);
+      if (h.size() >= 3) f.add(h, s);
+      if (h.size() == 2) f.segment(h[0], h[1], s);
+    }
+    for (const auto& p : P) f.add(p, dr::Style().color("#000000").layer(1));
+    t2::write_file_atomically(o.svg, render_models(f, P, o.model));
+  }
+  std::string out;
+  for (const auto& layer : L) {
+    for (std::size_t k = 0; k < layer.size(); ++k) out += (k ? " " : "") + std::to_string(layer[k]);
+    out += '\n';
+  }
+  fmt::print("{}", out);
+  return kOk;
+}
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Prints the convex layers of the points of the scene file FILE (- for standard input):\n"
+      "one line per layer, outermost first, each the 0-based indices of its strict hull\n"
+      "vertices among the scene's points (bare and labelled, in file order), counter-clockwise\n"
+      "in T2, separated by spaces. Layer j+1 is the hull of what layer j left: a point inside\n"
+      "a hull edge goes one layer deeper; equal points leave together (one index is printed).");
+  app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
+  app.add_option("--method", o->method,
+                 "jarvis (default: repeated Jarvis marches, O(n^2)) or graham (repeated Graham\n"
+                 "scans, O(n^2 log n)): the two ways of seed 003, with the same answer")
+      ->type_name("M")
+      ->check(CLI::IsMember({"jarvis", "graham"}));
+  app.add_option("--svg", o->svg, "also draw the points and the layers to OUT (SVG, atomically)")->type_name("OUT");
+  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
+      ->type_name("M")
+      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  app.footer(
+      "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"
+      "points lie in no open hemisphere, so not even the outer layer exists (the message\n"
+      "names points that prove it, e.g. 'p3 and p7 are antipodal').");
+  return [o] { return layers(*o); };
+}
+
+}  // namespace
+
+T2_COMMAND({"layers", "the convex layers of a scene's points (one line per layer)", setup});
+
+}  // namespace t2cli
