@@ -1,5 +1,6 @@
 // t2::convex_hull against CGAL's ch_akl_toussaint on the same points, in one run: for each
-// input, the counters t2_ms, cgal_ms (best of the iterations) and ratio = t2 / CGAL.
+// input, the counters t2_ms, cgal_ms (best of the iterations, in CPU time of the thread, so that
+// other processes on a shared machine do not count) and ratio = t2 / CGAL.
 //
 //   build/default/bin/bench_hull                      # 10^7 points (T2_BENCH_N to change)
 //   build/default/bin/bench_hull --benchmark_filter=Trace   # the cost of the trace hook
@@ -8,7 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <map>
 #include <vector>
@@ -39,11 +40,17 @@ const std::vector<t2::Point>& input(t2::gen::Kind k) {
   return it->second;
 }
 
+// The CPU time of this thread that f takes, in seconds.
 template <class F>
 double seconds(F&& f) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto now = [] {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
+  const double t0 = now();
   f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return now() - t0;
 }
 
 void BM_HullVsCgal(benchmark::State& state, t2::gen::Kind k) {

@@ -13,15 +13,30 @@ namespace t2 {
 
 namespace detail {
 
+// A point with its input index: the monotone chain sorts and scans these, contiguous in
+// memory, rather than indices into the input (which cost a cache miss per comparison).
+struct Indexed {
+  Point p;        // the point
+  std::size_t i;  // its index in the input
+};
+
+// The chain so far: the indices (what the trace sees) and their points.
+struct Chain {
+  std::vector<std::size_t> idx;
+  std::vector<Point> pts;
+};
+
 // One chain of the monotone chain: pops the points that do not turn left, pushes the next.
 template <class K, class Tr>
-void chain_step(std::span<const Point> P, std::vector<std::size_t>& h, std::size_t floor, std::size_t i, Tr& trace) {
-  while (h.size() >= floor + 2 && K::orient(P[h[h.size() - 2]], P[h.back()], P[i]) <= 0) {
-    trace(HullStep::pop, h.back(), h);
-    h.pop_back();
+void chain_step(Chain& h, std::size_t floor, const Indexed& e, Tr& trace) {
+  while (h.pts.size() >= floor + 2 && K::orient(h.pts[h.pts.size() - 2], h.pts.back(), e.p) <= 0) {
+    trace(HullStep::pop, h.idx.back(), h.idx);
+    h.idx.pop_back();
+    h.pts.pop_back();
   }
-  h.push_back(i);
-  trace(HullStep::push, i, h);
+  h.idx.push_back(e.i);
+  h.pts.push_back(e.p);
+  trace(HullStep::push, e.i, h.idx);
 }
 
 }  // namespace detail
@@ -34,19 +49,24 @@ std::vector<std::size_t> monotone_chain(std::span<const Point> P, std::vector<st
                                         Tr&& trace = {}) {
   //> hull-monotone
   const ChartOrder<K> order{chart};
-  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order.less(P[a], P[b]); });
-  idx.erase(std::unique(idx.begin(), idx.end(),
-                        [&](std::size_t a, std::size_t b) { return order.compare(P[a], P[b]) == ZERO; }),
-            idx.end());
-  if (idx.size() < 3) return idx;  // no point, one point, or a segment
-  std::vector<std::size_t> h;
-  h.reserve(idx.size() + 1);
-  for (std::size_t i : idx) detail::chain_step<K>(P, h, 0, i, trace);  // lower chain, left to right
-  const std::size_t lower = h.size() - 1;                               // the upper chain keeps it
-  for (auto it = idx.rbegin() + 1; it != idx.rend(); ++it) detail::chain_step<K>(P, h, lower, *it, trace);
-  h.pop_back();  // the first point again
+  std::vector<detail::Indexed> s;  // the points with their indices, sorted
+  s.reserve(idx.size());
+  for (std::size_t i : idx) s.push_back({P[i], i});
+  std::sort(s.begin(), s.end(), [&](const auto& a, const auto& b) { return order.less(a.p, b.p); });
+  s.erase(std::unique(s.begin(), s.end(), [&](const auto& a, const auto& b) { return order.compare(a.p, b.p) == ZERO; }),
+          s.end());
+  detail::Chain h;
+  if (s.size() < 3) {  // no point, one point, or a segment
+    for (const auto& e : s) h.idx.push_back(e.i);
+    return h.idx;
+  }
+  h.idx.reserve(s.size() + 1), h.pts.reserve(s.size() + 1);
+  for (const auto& e : s) detail::chain_step<K>(h, 0, e, trace);  // lower chain, left to right
+  const std::size_t lower = h.idx.size() - 1;                      // the upper chain keeps it
+  for (auto it = s.rbegin() + 1; it != s.rend(); ++it) detail::chain_step<K>(h, lower, *it, trace);
+  h.idx.pop_back();  // the first point again
   //< hull-monotone
-  return h;
+  return h.idx;
 }
 
 namespace detail {
