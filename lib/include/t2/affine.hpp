@@ -109,8 +109,11 @@ class BasicAffine {
   bool is_affine() const { return m_[0][1] == 0 && m_[0][2] == 0; }
   /// The exact sign of det M: NEGATIVE for maps that reverse orientation.
   Sign determinant_sign() const {
-    return sign_of_poly([](const auto&... c) { return det3(c...); }, m_[0][0], m_[0][1], m_[0][2], m_[1][0],
-                        m_[1][1], m_[1][2], m_[2][0], m_[2][1], m_[2][2]);
+    return sign_of_poly(
+        [](const auto& a, const auto& b, const auto& c) {
+          return det3(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
+        },
+        m_[0], m_[1], m_[2]);
   }
 
  private:

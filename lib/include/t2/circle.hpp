@@ -101,12 +101,11 @@ BasicCircle<T> circle_from_diameter(const BasicPoint<T>& p, const BasicPoint<T>&
   if (p == antipode(q)) throw Undefined("circle_from_diameter(p, q) is undefined when q = antipode(p)");
   const T awp = p.w() < 0 ? T(-p.w()) : p.w(), awq = q.w() < 0 ? T(-q.w()) : q.w();
   if ((p.w() > 0) != (q.w() > 0)) {
-    auto relative = [](const auto& wp, const auto& xp, const auto& yp, const auto& wq, const auto& xq,
-                       const auto& yq, const auto& ap, const auto& aq) {
-      const auto cx = aq * xp + ap * xq, cy = aq * yp + ap * yq;  // c = |w_q| p + |w_p| q
-      return (xp * wq - xq * wp) * cx + (yp * wq - yq * wp) * cy;  // ∝ (P − Q)·c
+    auto relative = [](const auto& p, const auto& q, const auto& ap, const auto& aq) {
+      const auto cx = aq * p.x + ap * q.x, cy = aq * p.y + ap * q.y;  // c = |w_q| p + |w_p| q
+      return (p.x * q.w - q.x * p.w) * cx + (p.y * q.w - q.y * p.w) * cy;  // ∝ (P − Q)·c
     };
-    if (sign_of_poly(relative, p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), awp, awq) != ZERO)
+    if (sign_of_poly(relative, p, q, awp, awq) != ZERO)
       throw Undefined(
           "circle_from_diameter(p, q) is undefined for p and q on different sides of T2 that are not equally far "
           "from the point where pq crosses the line at infinity");

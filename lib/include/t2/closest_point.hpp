@@ -28,25 +28,20 @@ BasicPoint<T> closest_point_on_segment(const BasicPoint<T>& a, const BasicPoint<
         "closest_point_on_segment(a, b, q) needs a, b, q proper and on one side of T2 (distances across the line at infinity are infinite)");
   //> closest-polys
   // U = w_a·(x_b, y_b) − w_b·(x_a, y_a) ~ B − A;   V = w_a·(x_q, y_q) − w_q·(x_a, y_a) ~ Q − A
-  auto N = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-              const auto& qw, const auto& qx, const auto& qy) {
-    return bw * ((aw * qx - qw * ax) * (aw * bx - bw * ax) + (aw * qy - qw * ay) * (aw * by - bw * ay));
+  auto N = [](const auto& a, const auto& b, const auto& q) {
+    return b.w * ((a.w * q.x - q.w * a.x) * (a.w * b.x - b.w * a.x) + (a.w * q.y - q.w * a.y) * (a.w * b.y - b.w * a.y));
   };
-  auto D = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-              const auto& qw, const auto&, const auto&) {
-    return qw * ((aw * bx - bw * ax) * (aw * bx - bw * ax) + (aw * by - bw * ay) * (aw * by - bw * ay));
+  auto D = [](const auto& a, const auto& b, const auto& q) {
+    return q.w * ((a.w * b.x - b.w * a.x) * (a.w * b.x - b.w * a.x) + (a.w * b.y - b.w * a.y) * (a.w * b.y - b.w * a.y));
   };
   //< closest-polys
-  auto DminusN = [&](const auto&... c) { return D(c...) - N(c...); };
-  const auto args = [&](auto&& f) {
-    return sign_of_poly(f, a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), q.w(), q.x(), q.y());
-  };
+  auto DminusN = [&](const auto& u, const auto& v, const auto& r) { return D(u, v, r) - N(u, v, r); };
+  const auto args = [&](auto&& f) { return sign_of_poly(f, a, b, q); };
   auto evaluate = [&](auto&& f) -> T {  // gmpxx temporaries must not outlive the lambda
     if constexpr (std::is_same_v<T, double>) {
-      return f(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), q.w(), q.x(), q.y());
+      return detail::apply_leaves(f, [](double v) { return v; }, a, b, q);
     } else {
-      using E = Exact<Integer>;
-      return f(E(a.w()), E(a.x()), E(a.y()), E(b.w()), E(b.x()), E(b.y()), E(q.w()), E(q.x()), E(q.y())).v;
+      return detail::apply_leaves(f, [](const Integer& v) { return Exact<Integer>(v); }, a, b, q).v;
     }
   };
   const Sign sD = args(D);  // sign(w_q) or 0 when a = b

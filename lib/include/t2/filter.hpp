@@ -27,7 +27,9 @@
 ///
 /// There are no epsilons: the bound only decides *whether* the fast answer is certain.
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
@@ -178,22 +180,109 @@ struct Dyadic {
 /// The sign of a dyadic number.
 inline Sign sign_of(const Dyadic& d) { return static_cast<Sign>(sgn(d.m)); }
 
-/// The exact sign of `f(args...)` for finite doubles (see the file comment).
-template <class F, class... D>
-Sign filtered_sign(F&& f, D... args) {
+//> poly-arguments
+/// The homogeneous coordinates of a point of T² on the number type N of a filter stage: what
+/// the polynomial of a predicate receives for each point (`p.w`, `p.x`, `p.y`).
+template <class N>
+struct Hom3 {
+  N w;  ///< weight
+  N x;  ///< first coordinate
+  N y;  ///< second coordinate
+};
+/// The coefficients of a line ⟨W, X, Y⟩ of T² on the number type N of a filter stage.
+template <class N>
+struct Line3 {
+  N W;  ///< coefficient of w
+  N X;  ///< coefficient of x
+  N Y;  ///< coefficient of y
+};
+/// The coordinates of a point [w, x] of T¹ on the number type N of a filter stage.
+template <class N>
+struct Hom2 {
+  N w;  ///< weight
+  N x;  ///< coordinate
+};
+
+/// How the filter reads one argument of a predicate: which coordinate type it has, and what
+/// the polynomial receives. A number is a leaf of its own; point.hpp, line.hpp and t1.hpp
+/// specialise this for points (Hom3), lines (Line3) and points of T¹ (Hom2).
+template <class A>
+struct Leaves {
+  using Coordinate = A;  ///< the number type of the argument
+  /// The argument on the stage's number type, each coordinate converted by `leaf`.
+  template <class F>
+  static auto map(const A& a, F&& leaf) {
+    return leaf(a);
+  }
+  /// True when `test` holds for every coordinate.
+  template <class F>
+  static bool all(const A& a, F&& test) {
+    return test(a);
+  }
+};
+//< poly-arguments
+
+/// A row of numbers (e.g. of a 3×3 matrix) is read as a std::array of the stage's number type.
+template <class T, std::size_t K>
+struct Leaves<std::array<T, K>> {
+  using Coordinate = T;  ///< the number type of the entries
+  /// The row on the stage's number type.
+  template <class F>
+  static auto map(const std::array<T, K>& r, F&& leaf) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      return std::array<decltype(leaf(r[0])), K>{leaf(r[I])...};
+    }(std::make_index_sequence<K>{});
+  }
+  /// True when `test` holds for every entry.
+  template <class F>
+  static bool all(const std::array<T, K>& r, F&& test) {
+    for (const T& v : r)
+      if (!test(v)) return false;
+    return true;
+  }
+};
+
+namespace detail {
+/// The common coordinate type of the arguments of a predicate, checked at compile time.
+template <class A, class... B>
+struct CommonCoordinate {
+  using type = typename Leaves<A>::Coordinate;  ///< double or Integer
+  static_assert((std::is_same_v<type, typename Leaves<B>::Coordinate> && ...),
+                "t2::sign_of_poly: every coordinate must have the same number type (double or t2::Integer); "
+                "convert them first, e.g. 0 -> 0.0, or a Point to an ExactPoint with to_exact");
+  static_assert(std::is_same_v<type, double> || std::is_same_v<type, Integer>,
+                "t2::sign_of_poly: coordinates are double or t2::Integer");
+};
+/// Every argument on the stage's number type N (`leaf` converts one coordinate).
+template <class F, class Leaf, class... A>
+auto apply_leaves(F& f, Leaf&& leaf, const A&... args) {
+  return f(Leaves<A>::map(args, leaf)...);
+}
+/// True when `test` holds for every coordinate of every argument.
+template <class Test, class... A>
+bool all_leaves(Test&& test, const A&... args) {
+  return (Leaves<A>::all(args, test) && ...);
+}
+}  // namespace detail
+
+/// The exact sign of `f(args...)` for arguments with finite `double` coordinates (see the file
+/// comment).
+template <class F, class... A>
+Sign filtered_sign(F&& f, const A&... args) {
   detail::count_call();
-  const Filtered r = f(Filtered(args)...);
-  const int s = certified_sign(r, (detail::in_filter_range(args) && ...));
+  const Filtered r = detail::apply_leaves(f, [](double v) { return Filtered(v); }, args...);
+  const int s = certified_sign(r, detail::all_leaves([](double v) { return detail::in_filter_range(v); }, args...));
   if (s != 2) return static_cast<Sign>(s);
-  if ((detail::small_integer(args) && ...) && r.mag < 0x1p52) return sign_of(r.v);  // no rounding
+  if (r.mag < 0x1p52 && detail::all_leaves([](double v) { return detail::small_integer(v); }, args...))
+    return sign_of(r.v);  // no rounding
   detail::count_exact();
-  return sign_of(f(Dyadic(args)...));
+  return sign_of(detail::apply_leaves(f, [](double v) { return Dyadic(v); }, args...));
 }
 
 /// The sign of `f(args...)` evaluated directly in exact arithmetic (integer coordinates).
-template <class F>
-Sign exact_sign(F&& f, const auto&... args) {
-  return sign_of(f(Exact<Integer>(Integer(args))...).v);
+template <class F, class... A>
+Sign exact_sign(F&& f, const A&... args) {
+  return sign_of(detail::apply_leaves(f, [](const Integer& v) { return Exact<Integer>(v); }, args...).v);
 }
 
 namespace detail {
@@ -201,33 +290,35 @@ namespace detail {
 inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= 52; }
 }  // namespace detail
 
-/// The exact sign of the polynomial `f` (a generic lambda using `+`, `-`, `*`) at `args`:
-/// filtered for `double` coordinates; for `Integer` coordinates the same filter runs first when
+//> sign-of-poly
+/// The exact sign of the polynomial `f` at `args`. `f` is a generic lambda using `+`, `-`, `*`
+/// that receives each argument on the number type of the filter's stage: a point as a Hom3
+/// (`p.w`, `p.x`, `p.y`), a line as a Line3 (`l.W`, `l.X`, `l.Y`), a point of T¹ as a Hom2, a
+/// number as a number. For example the sign of the 2×2 minor wx of two points is
+/// `sign_of_poly([](const auto& p, const auto& q) { return p.w * q.x - p.x * q.w; }, p, q)`.
+/// Filtered for `double` coordinates; for `Integer` coordinates the same filter runs first when
 /// every coordinate has at most 52 bits (they convert to doubles exactly, and the filter's
 /// integer certificate often decides), and GMP integers decide the rest. Only calls on
-/// `double` coordinates are counted in filter_stats(). Every coordinate has the same type,
-/// `double` or `Integer`: a mix (say 0.5 and 0) does not compile, since converting it would
-/// change the polynomial (tests/compile_fail). The kernel's own predicates (orient.hpp,
-/// incircle.hpp, orient3d.hpp) take points and have hand-written fast paths instead.
-template <class F, class T, class... U>
-Sign sign_of_poly(F&& f, const T& first, const U&... rest) {
-  static_assert((std::is_same_v<T, U> && ...),
-                "t2::sign_of_poly: every coordinate must have the same number type (double or t2::Integer); "
-                "convert them first, e.g. 0 -> 0.0");
-  static_assert(std::is_same_v<T, double> || std::is_same_v<T, Integer>,
-                "t2::sign_of_poly: coordinates are double or t2::Integer");
+/// `double` coordinates are counted in filter_stats(). Every coordinate of every argument has
+/// the same type, `double` or `Integer`: a mix (0.5 and 0, a Point and an ExactPoint) does not
+/// compile, since converting it would change the polynomial (tests/compile_fail). The kernel's
+/// hot predicates (orient.hpp, incircle.hpp, orient3d.hpp, distance.hpp) have hand-written fast
+/// paths instead.
+template <class F, class... A>
+Sign sign_of_poly(F&& f, const A&... args) {
+  using T = typename detail::CommonCoordinate<A...>::type;
   if constexpr (std::is_same_v<T, double>) {
-    return filtered_sign(f, first, rest...);
+    return filtered_sign(f, args...);
   } else {
-    if (detail::fits_filter(first) && (detail::fits_filter(rest) && ...)) {
-      const Filtered r = f(Filtered(first.get_d()), Filtered(rest.get_d())...);
-      const bool in_range = detail::in_filter_range(first.get_d()) && (detail::in_filter_range(rest.get_d()) && ...);
-      const int s = certified_sign(r, in_range);
+    if (detail::all_leaves([](const Integer& v) { return detail::fits_filter(v); }, args...)) {
+      const Filtered r = detail::apply_leaves(f, [](const Integer& v) { return Filtered(v.get_d()); }, args...);
+      const int s = certified_sign(r, true);  // 52-bit integers are in the filter's range
       if (s != 2) return static_cast<Sign>(s);
       if (r.mag < 0x1p52) return sign_of(r.v);  // integers, no rounding: exact
     }
-    return exact_sign(f, first, rest...);
+    return exact_sign(f, args...);
   }
 }
+//< sign-of-poly
 
 }  // namespace t2

@@ -113,8 +113,7 @@ int along_rank(const BasicLine<T>& l, const BasicPoint<T>& p) {
   if (p.w() > 0) return 1;
   if (p.w() < 0) return 3;
   // On Omega: D = [0, Y, -X] is where l runs to; p is D or its antipode (the start).
-  const Sign d = sign_of_poly([](const auto& x, const auto& y, const auto& X, const auto& Y) { return x * Y - y * X; },
-                              p.x(), p.y(), l.X(), l.Y());
+  const Sign d = sign_of_poly([](const auto& q, const auto& m) { return q.x * m.Y - q.y * m.X; }, p, l);
   return d == POSITIVE ? 2 : 0;
 }
 
@@ -129,8 +128,8 @@ Sign compare_along_line(const BasicLine<T>& l, const BasicPoint<T>& p, const Bas
   if (rp != rq) return rp < rq ? NEGATIVE : POSITIVE;
   if (rp == 0 || rp == 2) return ZERO;  // a single point in each of these classes
   // Both in the same open half circle: q follows p iff (p x q) . n > 0, n = (W, X, Y).
-  return -sign_of_poly([](const auto&... c) { return det3(c...); }, p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), l.W(),
-                       l.X(), l.Y());
+  return -sign_of_poly([](const auto& a, const auto& b, const auto& n) { return det3(a.w, a.x, a.y, b.w, b.x, b.y, n.W, n.X, n.Y); },
+                       p, q, l);
 }
 
 /// The points of l sorted along l, cut at its start (see the file comment); equal points keep

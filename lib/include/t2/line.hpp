@@ -45,6 +45,22 @@ using Line = BasicLine<double>;
 /// Lines with big-integer coefficients.
 using ExactLine = BasicLine<Integer>;
 
+/// A line is read by the filter's polynomials as a Line3 (`l.W`, `l.X`, `l.Y`; filter.hpp).
+template <class T>
+struct Leaves<BasicLine<T>> {
+  using Coordinate = T;  ///< the number type of the coefficients
+  /// The line on the stage's number type.
+  template <class F>
+  static auto map(const BasicLine<T>& l, F&& leaf) {
+    return Line3<decltype(leaf(l.W()))>{leaf(l.W()), leaf(l.X()), leaf(l.Y())};
+  }
+  /// True when `test` holds for the three coefficients.
+  template <class F>
+  static bool all(const BasicLine<T>& l, F&& test) {
+    return test(l.W()) && test(l.X()) && test(l.Y());
+  }
+};
+
 /// Ω, the line at infinity ⟨1, 0, 0⟩, oriented so that the front side is its positive side.
 template <class T = double>
 BasicLine<T> omega() {
@@ -55,9 +71,7 @@ BasicLine<T> omega() {
 /// Exact for every finite input. Note side(l, ¬p) = -side(l, p).
 template <class T>
 Sign side(const BasicLine<T>& l, const BasicPoint<T>& p) {
-  return sign_of_poly([](const auto& a, const auto& b, const auto& c, const auto& d, const auto& e,
-                         const auto& f) { return a * d + b * e + c * f; },
-                      l.W(), l.X(), l.Y(), p.w(), p.x(), p.y());
+  return sign_of_poly([](const auto& m, const auto& q) { return m.W * q.w + m.X * q.x + m.Y * q.y; }, l, p);
 }
 
 /// The opposite line ¬l = <-W, -X, -Y>: the same points, the orientation and the sides swapped

@@ -19,6 +19,14 @@ N det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, c
   return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
 }
 
+/// The 3×3 determinant |p; q; r| of three homogeneous triples as the filter passes them (Hom3 of
+/// filter.hpp): `sign_of_poly([](const auto& p, const auto& q, const auto& r) { return det3(p, q, r);
+/// }, p, q, r)` is orient(p, q, r).
+template <class N>
+N det3(const Hom3<N>& p, const Hom3<N>& q, const Hom3<N>& r) {
+  return det3(p.w, p.x, p.y, q.w, q.x, q.y, r.w, r.x, r.y);
+}
+
 namespace detail {
 
 /// True when every argument is exactly 1.0: compared as bit patterns, one branch for all.
@@ -54,8 +62,7 @@ Sign orient(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>&
         detail::fits_filter(r.w()) && detail::fits_filter(r.x()) && detail::fits_filter(r.y()))
       return detail::orient_double(p.w().get_d(), p.x().get_d(), p.y().get_d(), q.w().get_d(), q.x().get_d(),
                                    q.y().get_d(), r.w().get_d(), r.x().get_d(), r.y().get_d());
-    return exact_sign([](const auto&... c) { return det3(c...); }, p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(),
-                      r.x(), r.y());
+    return exact_sign([](const auto& a, const auto& b, const auto& c) { return det3(a, b, c); }, p, q, r);
   }
 }
 

@@ -63,6 +63,22 @@ using Point = BasicPoint<double>;
 /// Points with big-integer coordinates: exact predicates and exact constructions.
 using ExactPoint = BasicPoint<Integer>;
 
+/// A point is read by the filter's polynomials as a Hom3 (`p.w`, `p.x`, `p.y`; filter.hpp).
+template <class T>
+struct Leaves<BasicPoint<T>> {
+  using Coordinate = T;  ///< the number type of the coordinates
+  /// The point on the stage's number type.
+  template <class F>
+  static auto map(const BasicPoint<T>& p, F&& leaf) {
+    return Hom3<decltype(leaf(p.w()))>{leaf(p.w()), leaf(p.x()), leaf(p.y())};
+  }
+  /// True when `test` holds for the three coordinates.
+  template <class F>
+  static bool all(const BasicPoint<T>& p, F&& test) {
+    return test(p.w()) && test(p.x()) && test(p.y());
+  }
+};
+
 /// The antipode ¬p = [-w, -x, -y]: distinct from p, it coincides with p in the planar model
 /// and is diametrically opposite on the sphere.
 template <class T>
@@ -102,14 +118,12 @@ bool is_at_infinity(const BasicPoint<T>& p) {
 /// Equality in T²: p = q iff q = αp for some α > 0 (so p != ¬p). Exact for every input.
 template <class T>
 bool operator==(const BasicPoint<T>& p, const BasicPoint<T>& q) {
-  auto minor = [](const auto& a, const auto& b, const auto& c, const auto& d) { return a * d - b * c; };
-  auto dot = [](const auto& a, const auto& b, const auto& c, const auto& d, const auto& e, const auto& f) {
-    return a * d + b * e + c * f;
-  };
-  if (sign_of_poly(minor, p.w(), p.x(), q.w(), q.x()) != ZERO) return false;
-  if (sign_of_poly(minor, p.w(), p.y(), q.w(), q.y()) != ZERO) return false;
-  if (sign_of_poly(minor, p.x(), p.y(), q.x(), q.y()) != ZERO) return false;
-  return sign_of_poly(dot, p.w(), p.x(), p.y(), q.w(), q.x(), q.y()) == POSITIVE;
+  // p × q = 0 (the three minors) and p · q > 0.
+  if (sign_of_poly([](const auto& a, const auto& b) { return a.w * b.x - a.x * b.w; }, p, q) != ZERO) return false;
+  if (sign_of_poly([](const auto& a, const auto& b) { return a.w * b.y - a.y * b.w; }, p, q) != ZERO) return false;
+  if (sign_of_poly([](const auto& a, const auto& b) { return a.x * b.y - a.y * b.x; }, p, q) != ZERO) return false;
+  return sign_of_poly([](const auto& a, const auto& b) { return a.w * b.w + a.x * b.x + a.y * b.y; }, p, q) ==
+         POSITIVE;
 }
 
 /// Converts a double point to integer coordinates representing the same point exactly

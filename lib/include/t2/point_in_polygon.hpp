@@ -55,8 +55,7 @@ Sign locate_by_ray_casting(const BasicPolygon<T>& P, const BasicPoint<T>& q) {
   if (on_boundary(P, q)) return ZERO;
   // above(p): y_p/w_p > y_q/w_q, i.e. y_p w_q - y_q w_p > 0 (both weights positive).
   auto above = [&q](const BasicPoint<T>& p) {
-    return sign_of_poly([](const auto& yp, const auto& wp, const auto& yq, const auto& wq) { return yp * wq - yq * wp; },
-                        p.y(), p.w(), q.y(), q.w()) == POSITIVE;
+    return sign_of_poly([](const auto& a, const auto& b) { return a.y * b.w - b.y * a.w; }, p, q) == POSITIVE;
   };
   const std::size_t n = P.size();
   bool inside = false;

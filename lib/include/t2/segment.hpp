@@ -102,19 +102,13 @@ bool on_segment_impl(const BasicPoint<T>& p, const BasicPoint<T>& q, const Basic
   if (orient(p, q, r) != ZERO) return false;
   if (p == q) return r == p;  // the one-point segment
   // (u × v)·(s × t) = (u·s)(v·t) − (u·t)(v·s) (Lagrange's identity) on the coordinates.
-  auto coefficient = [](const auto& uw, const auto& ux, const auto& uy,  // u
-                        const auto& vw, const auto& vx, const auto& vy,  // v
-                        const auto& sw, const auto& sx, const auto& sy,  // s
-                        const auto& tw, const auto& tx, const auto& ty) {  // t
-    const auto us = uw * sw + ux * sx + uy * sy, vt = vw * tw + vx * tx + vy * ty;
-    const auto ut = uw * tw + ux * tx + uy * ty, vs = vw * sw + vx * sx + vy * sy;
-    return us * vt - ut * vs;
+  auto coefficient = [](const auto& u, const auto& v, const auto& s, const auto& t) {
+    auto dot = [](const auto& a, const auto& b) { return a.w * b.w + a.x * b.x + a.y * b.y; };
+    return dot(u, s) * dot(v, t) - dot(u, t) * dot(v, s);
   };
   // α: (r × q)·(p × q);  β: (p × r)·(p × q).
-  const Sign alpha = sign_of_poly(coefficient, r.w(), r.x(), r.y(), q.w(), q.x(), q.y(),
-                                  p.w(), p.x(), p.y(), q.w(), q.x(), q.y());
-  const Sign beta = sign_of_poly(coefficient, p.w(), p.x(), p.y(), r.w(), r.x(), r.y(),
-                                 p.w(), p.x(), p.y(), q.w(), q.x(), q.y());
+  const Sign alpha = sign_of_poly(coefficient, r, q, p, q);
+  const Sign beta = sign_of_poly(coefficient, p, r, p, q);
   return alpha != NEGATIVE && beta != NEGATIVE;
 }
 //< on-segment

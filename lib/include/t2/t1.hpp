@@ -41,6 +41,22 @@ class BasicT1 {
   T w_, x_;
 };
 
+/// A point of T¹ is read by the filter's polynomials as a Hom2 (`a.w`, `a.x`; filter.hpp).
+template <class T>
+struct Leaves<BasicT1<T>> {
+  using Coordinate = T;  ///< the number type of the coordinates
+  /// The point on the stage's number type.
+  template <class F>
+  static auto map(const BasicT1<T>& a, F&& leaf) {
+    return Hom2<decltype(leaf(a.w()))>{leaf(a.w()), leaf(a.x())};
+  }
+  /// True when `test` holds for both coordinates.
+  template <class F>
+  static bool all(const BasicT1<T>& a, F&& test) {
+    return test(a.w()) && test(a.x());
+  }
+};
+
 /// T¹ points with `double` coordinates.
 using T1 = BasicT1<double>;
 /// T¹ points with big-integer coordinates.
@@ -65,18 +81,15 @@ BasicT1<T> antipode(const BasicT1<T>& a) {
 /// Equality up to a positive factor. Exact.
 template <class T>
 bool operator==(const BasicT1<T>& a, const BasicT1<T>& b) {
-  auto minor = [](const auto& p, const auto& q, const auto& r, const auto& s) { return p * s - q * r; };
-  auto dot = [](const auto& p, const auto& q, const auto& r, const auto& s) { return p * r + q * s; };
-  return sign_of_poly(minor, a.w(), a.x(), b.w(), b.x()) == ZERO &&
-         sign_of_poly(dot, a.w(), a.x(), b.w(), b.x()) == POSITIVE;
+  return orient(a, b) == ZERO &&
+         sign_of_poly([](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x; }, a, b) == POSITIVE;
 }
 
 /// Orientation of T¹ (the 2×2 determinant |a; b|): POSITIVE when b follows a counter-clockwise
 /// on the circle model within half a turn. For two front points this is sign(b - a).
 template <class T>
 Sign orient(const BasicT1<T>& a, const BasicT1<T>& b) {
-  return sign_of_poly([](const auto& p, const auto& q, const auto& r, const auto& s) { return p * s - q * r; },
-                      a.w(), a.x(), b.w(), b.x());
+  return sign_of_poly([](const auto& p, const auto& q) { return p.w * q.x - p.x * q.w; }, a, b);
 }
 
 /// Compares two values of the closed extended line [-∞, +∞] given as T¹ points with w ≥ 0
