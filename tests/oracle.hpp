@@ -1,7 +1,9 @@
 #pragma once
 // The exact rational oracle of the test suite, written independently of the library's
 // predicates: every value is a GMP rational (mpq), no filter, no expansion, no shared formula.
+#include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <utility>
 
 #include "t2/number.hpp"
@@ -79,6 +81,52 @@ Sign lifted_oracle(const P& a, const P& b, const P& c, const P& d) {
     return std::array<Rational, 4>{x, y, x * x + y * y, Rational(1)};
   };
   return sign_oracle(det_oracle<4>({row(a), row(b), row(c), row(d)}));
+}
+
+/// The in-circle sign of d for a, b, c not all proper on one side (the lunes of incircle.hpp),
+/// from the sweep rule alone: the disk centred at the point u of Ω perpendicular to the line of
+/// the pair (p, q) — the two points of a, b, c on one side, in their cyclic order, or (c, a)
+/// when c is on Ω and a, b on opposite sides — and on its left; on each side the points whose
+/// key u·(x, y)/|w| exceeds that of the points of a, b, c on that side (which must agree: the
+/// lune passes through them). `Undefined` for the triples incircle.hpp rejects.
+template <class P>
+Sign in_lune_oracle(const P& a, const P& b, const P& c, const P& d) {
+  const P* t[3] = {&a, &b, &c};
+  int s[3];
+  for (int i = 0; i < 3; ++i) s[i] = sgn(q(t[i]->w()));
+  if ((s[0] != 0) + (s[1] != 0) + (s[2] != 0) < 2 || orient_oracle(a, b, c) == ZERO) throw Undefined("no lune");
+  const P *p = nullptr, *r = nullptr, *omega = nullptr;  // the pivot pair, and the point of Omega
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (s[i] != 0 && s[i] == s[j]) p = t[i], r = t[j];
+    if (s[i] == 0) omega = t[i];
+  }
+  if (!p) p = omega, r = t[(std::find(t, t + 3, omega) - t + 1) % 3];  // (c, a) with c on Omega
+  const auto [pw, px, py] = triple(*p);
+  const auto [rw, rx, ry] = triple(*r);
+  const Rational ux = py * rw - pw * ry, uy = pw * rx - px * rw;  // (X, Y) of the line p ∨ r
+  auto dot = [&](const P& v) { return Rational(ux * q(v.x()) + uy * q(v.y())); };
+  auto key = [&](const P& v) { return Rational(dot(v) / abs(q(v.w()))); };
+  int outcome_other = 0;  // for c on Omega with a, b on one side: the other side is all in or all out
+  Rational k[3];          // the key of each side: index sign + 1
+  bool has[3] = {false, false, false};
+  for (int i = 0; i < 3; ++i) {
+    if (s[i] == 0) continue;
+    const Rational v = key(*t[i]);
+    if (has[s[i] + 1] && k[s[i] + 1] != v) throw std::logic_error("the lune misses a point");
+    k[s[i] + 1] = v;
+    has[s[i] + 1] = true;
+  }
+  if (omega && p != omega) outcome_other = -sgn(dot(*omega));
+  if (omega && p == omega && sgn(dot(*omega)) != 0) throw std::logic_error("the lune misses its vertex");
+  const int sd = sgn(q(d.w()));
+  if (sd == 0) {
+    const int h = sgn(dot(d));  // the open half of Omega centred at u is inside
+    if (omega && p != omega && h == sgn(dot(*omega))) return ZERO;  // the half of Omega through c: the circle
+    return static_cast<Sign>(h);
+  }
+  if (!has[sd + 1]) return static_cast<Sign>(outcome_other);
+  return static_cast<Sign>(sgn(key(d) - k[sd + 1]));
 }
 
 /// The 4×4 determinant with rows [x, y, z, 1] of four points of R³ (seed 004's formula for

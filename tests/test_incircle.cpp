@@ -147,11 +147,101 @@ TEST(InCircle, FrontPointsFollowCgalsConvention) {
 }
 
 TEST(InCircle, UndefinedWithoutACircle) {
-  const ExactPoint a(1, 0, 0), b(1, 1, 0), c(1, 0, 1), d(1, 3, 3);
-  EXPECT_THROW(in_circle(a, b, antipode(c), d), Undefined);                 // both sides
-  EXPECT_THROW(in_circle(a, b, ExactPoint(0, 1, 1), d), Undefined);         // a point of Omega
-  EXPECT_THROW(in_circle(a, b, ExactPoint(1, 2, 0), d), Undefined);         // collinear
-  EXPECT_THROW(in_circle(Point(0, 1, 0), Point(1, 1, 0), Point(1, 0, 1), Point(1, 3, 3)), Undefined);
+  const ExactPoint a(1, 0, 0), b(1, 1, 0), d(1, 3, 3);
+  EXPECT_THROW(in_circle(a, b, ExactPoint(1, 2, 0), d), Undefined);   // collinear
+  EXPECT_THROW(in_circle(a, b, ExactPoint(-1, -2, 0), d), Undefined);  // collinear across sides
+  EXPECT_THROW(in_circle(a, b, ExactPoint(0, 1, 0), d), Undefined);   // collinear through Omega
+  // Two points of Omega and one proper: infinitely many lunes.
+  EXPECT_THROW(in_circle(ExactPoint(0, 1, 0), a, ExactPoint(0, 0, 1), d), Undefined);
+  EXPECT_THROW(in_circle(Point(0, 1, 0), Point(0, 1, 1), Point(1, 0, 1), Point(1, 3, 3)), Undefined);
+}
+
+TEST(InCircle, LunesByHand) {
+  // a, b on the front along the x axis, c on the back drawn at (0, 5): the lune is the front
+  // half-plane y > 0 and the back half-plane drawn below Y = 5, centred at the direction +y.
+  const Point a(1, 0, 0), b(1, 1, 0), c(-1, 0, -5);
+  EXPECT_EQ(in_circle(a, b, c, Point(1, 0, 1)), POSITIVE);
+  EXPECT_EQ(in_circle(a, b, c, Point(1, 0, -1)), NEGATIVE);
+  EXPECT_EQ(in_circle(a, b, c, Point(1, 7, 0)), ZERO);
+  EXPECT_EQ(in_circle(a, b, c, Point(-1, 0, 0)), POSITIVE);    // back, drawn at (0, 0)
+  EXPECT_EQ(in_circle(a, b, c, Point(-1, -3, -10)), NEGATIVE);  // back, drawn at (3, 10)
+  EXPECT_EQ(in_circle(a, b, c, Point(-2, 8, -10)), ZERO);       // back, drawn at (-4, 5)
+  EXPECT_EQ(in_circle(a, b, c, Point(0, 0, 1)), POSITIVE);     // the direction +y, the centre
+  EXPECT_EQ(in_circle(a, b, c, Point(0, 1, 0)), ZERO);         // the vertices of the lune
+  EXPECT_EQ(in_circle(a, b, c, Point(0, 1, -1)), NEGATIVE);
+  // The circle through two points and a point at infinity is their line: left of a -> b.
+  const Point up(0, 1, 3), down(0, 1, -3);
+  EXPECT_EQ(in_circle(a, b, up, Point(1, 5, 2)), POSITIVE);
+  EXPECT_EQ(in_circle(a, b, down, Point(1, 5, 2)), POSITIVE);
+  EXPECT_EQ(in_circle(a, b, up, Point(1, 5, -2)), NEGATIVE);
+  EXPECT_EQ(in_circle(a, b, up, Point(-1, 5, 2)), NEGATIVE);  // the back: outside, c turns left
+  EXPECT_EQ(in_circle(a, b, down, Point(-1, 5, 2)), POSITIVE);  // c turns right: inside
+  EXPECT_EQ(in_circle(a, b, up, Point(0, -1, 1)), ZERO);      // the half of Omega through c
+  EXPECT_EQ(in_circle(a, b, up, Point(0, -1, -1)), NEGATIVE);
+  EXPECT_EQ(in_circle(a, b, down, Point(0, -1, 1)), POSITIVE);
+  EXPECT_EQ(in_circle(a, b, down, Point(0, -1, -1)), ZERO);
+}
+
+template <class P>
+void lunes_match_oracle(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long> u(-4, 4), w(-2, 2);
+  auto any = [&] {
+    for (;;) {
+      const long pw = w(rng), px = u(rng), py = u(rng);
+      if (pw != 0 || px != 0 || py != 0) return make<P>(pw, px, py);
+    }
+  };
+  int counts[3] = {0, 0, 0}, undefined = 0;
+  for (int i = 0; i < 20000 * scale(); ++i) {
+    const P a = any(), b = any(), c = any(), d = any();
+    const int sa = sgn(q(a.w())), sb = sgn(q(b.w())), sc = sgn(q(c.w()));
+    if (sa != 0 && sa == sb && sb == sc) continue;  // a finite circle: the tests above
+    Sign want;
+    try {
+      want = testing::in_lune_oracle(a, b, c, d);
+    } catch (const Undefined&) {
+      ++undefined;
+      ASSERT_THROW(in_circle(a, b, c, d), Undefined) << to_string(a) << to_string(b) << to_string(c);
+      continue;
+    }
+    ++counts[want + 1];
+    ASSERT_EQ(in_circle(a, b, c, d), want) << to_string(a) << to_string(b) << to_string(c) << to_string(d);
+    ASSERT_EQ(in_circle(b, c, a, d), want);
+    ASSERT_EQ(in_circle(c, a, b, d), want);
+    ASSERT_EQ(in_circle(b, a, c, d), -want);
+    ASSERT_EQ(in_circle(antipode(a), antipode(b), antipode(c), antipode(d)), -want);
+    ASSERT_EQ(in_disk(a, b, c, d), orient(a, b, c) * want);
+  }
+  EXPECT_GT(counts[0], 100);
+  EXPECT_GT(counts[1], 100);
+  EXPECT_GT(counts[2], 100);
+  EXPECT_GT(undefined, 100);
+}
+
+TEST(InCircle, LunesMatchTheSweepRuleOracle) {
+  lunes_match_oracle<Point>(31);
+  lunes_match_oracle<ExactPoint>(32);
+}
+
+TEST(InCircle, APointAtInfinityIsTheLimitOfFarPoints) {
+  // c on Omega against c_R = a + R·c (homogeneous sum) on the side of a, b, R = 2^100: for every d
+  // off the line a ∨ b the finite circle through a, b, c_R already answers as the line does.
+  std::mt19937_64 rng(33);
+  std::uniform_int_distribution<long> u(-20, 20), w(1, 3);
+  const Integer R = Integer(1) << 100;
+  int checked = 0;
+  for (int i = 0; i < 3000 * scale(); ++i) {
+    const long s = i % 2 ? 1 : -1;
+    const ExactPoint a(s, u(rng), u(rng)), b(s, u(rng), u(rng)), c(0, u(rng), u(rng) + 21);
+    const ExactPoint d(s * (i % 3 ? 1 : -1) * w(rng), u(rng), u(rng));
+    if (a == b || orient(a, b, c) == ZERO || orient(a, b, d) == ZERO) continue;
+    const ExactPoint far(a.w(), a.x() + R * c.x(), a.y() + R * c.y());  // tends to c
+    ASSERT_EQ(in_circle(a, b, c, d), in_circle(a, b, far, d)) << to_string(a) << to_string(b) << to_string(c)
+                                                             << to_string(d);
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(InCircle, RandomDoublesMatchOracle) {
