@@ -1,5 +1,7 @@
-// The kernel's predicates against naive double arithmetic and CGAL 5.5's
-// Exact_predicates_inexact_constructions_kernel, in one run, on front (Cartesian) points:
+// The kernel's predicates (orient, in_circle, compare_distance, compare_xy) against naive double
+// arithmetic and CGAL 5.5's Exact_predicates_inexact_constructions_kernel (orientation,
+// side_of_oriented_circle, compare_distance_to_point, compare_xy), in one run, on front
+// (Cartesian) points:
 //   cmake --build --preset default --target bench_kernel && build/default/bin/bench_kernel
 // Prints, per predicate and input, the processor time per call of each (best of 5 passes of 10⁶
 // calls over 2048 inputs)
@@ -16,7 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "t2/distance.hpp"
 #include "t2/incircle.hpp"
+#include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
 
 namespace {
@@ -94,6 +98,21 @@ int naive_incircle(const Quad& q) {
   return (d > 0) - (d < 0);
 }
 
+// Is p[0] nearer to p[2] than p[1] is? The squared distances compared in doubles.
+int naive_distance(const Quad& q) {
+  const double ax = q.p[0].x() - q.p[2].x(), ay = q.p[0].y() - q.p[2].y(), bx = q.p[1].x() - q.p[2].x(),
+               by = q.p[1].y() - q.p[2].y();
+  const double d = (ax * ax + ay * ay) - (bx * bx + by * by);
+  return (d > 0) - (d < 0);
+}
+
+// The lexicographic (x, y) order of p[0] and p[1]: plain comparisons of doubles (exact).
+int naive_xy(const Quad& q) {
+  const t2::Point &a = q.p[0], &b = q.p[1];
+  if (a.x() != b.x()) return a.x() < b.x() ? -1 : 1;
+  return (a.y() > b.y()) - (a.y() < b.y());
+}
+
 constexpr std::size_t kInput = 1 << 11;  // distinct inputs, cycled (they stay in the cache)
 constexpr std::size_t kCalls = 1000000;  // calls per measurement
 
@@ -165,6 +184,12 @@ int main() {
             [](const Quad& q) {
               return static_cast<int>(CGAL::side_of_oriented_circle(q.c[0], q.c[1], q.c[2], q.c[3]));
             });
+    run_row("distance", k, in, checksum, naive_distance,
+            [](const Quad& q) { return static_cast<int>(t2::compare_distance(q.p[0], q.p[1], q.p[2])); },
+            [](const Quad& q) { return static_cast<int>(CGAL::compare_distance_to_point(q.c[2], q.c[0], q.c[1])); });
+    run_row("xy", k, in, checksum, naive_xy,
+            [](const Quad& q) { return static_cast<int>(t2::compare_xy(q.p[0], q.p[1])); },
+            [](const Quad& q) { return static_cast<int>(CGAL::compare_xy(q.c[0], q.c[1])); });
   }
   std::fprintf(stderr, "(checksum %ld)\n", checksum);
 }

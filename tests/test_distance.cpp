@@ -298,6 +298,32 @@ TEST(CompareDistance, AngleRuleWithProperCentreIsTheLimit) {
   }
 }
 
+TEST(CompareDistance, NearlyEquidistantCartesianAtEveryScale) {
+  // Every stage of distance_double.hpp: a and b rounded onto one circle around c (so the
+  // filter cannot decide), b nudged by a few ulps, all scaled exactly by 2^e; the fast path,
+  // the unrounded differences, the two-component expansions and the dyadic fallback.
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1), t(0, 6.283185307179586);
+  std::uniform_int_distribution<int> k(-2, 2);
+  int ties = 0;
+  for (int e : {0, 60, -60, 300, -300, 484, -484, 490, -490, 501, -540, 900, -1000}) {
+    for (int i = 0; i < 300 * scale(); ++i) {
+      const double cx = u(rng), cy = u(rng), r = 0.1 + std::fabs(u(rng)), s = t(rng), v = t(rng);
+      double bx = cx + r * std::cos(v), by = cy + r * std::sin(v);
+      for (int j = k(rng); j != 0; j += j > 0 ? -1 : 1) by = std::nextafter(by, j > 0 ? 9.0 : -9.0);
+      const double ax = i % 4 ? cx + r * std::cos(s) : 2 * cx - bx, ay = i % 4 ? cy + r * std::sin(s) : 2 * cy - by;
+      const Point a = Point::cartesian(std::ldexp(ax, e), std::ldexp(ay, e)),
+                  b = Point::cartesian(std::ldexp(bx, e), std::ldexp(by, e)),
+                  c = Point::cartesian(std::ldexp(cx, e), std::ldexp(cy, e));
+      const Sign want = oracle_proper(a, b, c);
+      ties += want == ZERO;
+      ASSERT_EQ(compare_distance(a, b, c), want) << e;
+      ASSERT_EQ(compare_distance(b, a, c), -want) << e;
+    }
+  }
+  EXPECT_GT(ties, 0);  // the reflections through c are exact ties
+}
+
 TEST(CompareDistance, DoublesAtExtremeExponentsMatchIntegers) {
   // The filter must defer to the exact stage; compare with the same points as integers.
   std::mt19937_64 rng(15);

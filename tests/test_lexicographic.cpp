@@ -64,6 +64,29 @@ void wxy_matches_normalized(std::uint64_t seed) {
   EXPECT_GT(ties, 0);
 }
 
+TEST(Lexicographic, NearlyEqualRatiosAtEveryScale) {
+  // compare_x on doubles: x/|w| of two points that are nearly (or exactly) the same multiple,
+  // at every exponent, against the rational normalized coordinates.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1), w(0.5, 4);
+  std::uniform_int_distribution<int> k(-2, 2), side(0, 2);
+  int ties = 0;
+  for (int e : {0, 60, -60, 300, -300, 484, -484, 501, -520, 1000, -1060}) {
+    for (int i = 0; i < 300 * scale(); ++i) {
+      const double x = u(rng), pw = w(rng), qw = i % 3 ? w(rng) : pw, f = qw / pw;
+      double qx = x * f;  // rounded: q's ratio is within an ulp or two of p's
+      for (int j = k(rng); j != 0; j += j > 0 ? -1 : 1) qx = std::nextafter(qx, j > 0 ? 9.0 : -9.0);
+      const double sp = side(rng) ? 1 : -1, sq = side(rng) ? 1 : -1;
+      const Point p(sp * pw, sp * std::ldexp(x, e), u(rng)), r(sq * qw, sq * std::ldexp(qx, e), u(rng));
+      const Sign want = lex(std::array{normalized_oracle(p)[1]}, std::array{normalized_oracle(r)[1]});
+      ties += want == ZERO;
+      ASSERT_EQ(compare_x(p, r), want) << e;
+      ASSERT_EQ(compare_x(r, p), -want) << e;
+    }
+  }
+  EXPECT_GT(ties, 0);
+}
+
 TEST(Lexicographic, WxyOrderIsTheOrderOfNormalizedCoordinates) {
   wxy_matches_normalized<Point>(1);
   wxy_matches_normalized<ExactPoint>(2);

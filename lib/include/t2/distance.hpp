@@ -29,9 +29,11 @@
 #include <string>
 #include <type_traits>
 
+#include "t2/distance_double.hpp"
 #include "t2/error.hpp"
 #include "t2/filter.hpp"
 #include "t2/number.hpp"
+#include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/sign.hpp"
 #include "t2/t1.hpp"
@@ -75,8 +77,7 @@ Sign compare_distance_values(const BasicT1<T>& d1, const BasicT1<T>& d2) {
     if (sign_of(d1.w()) == sign_of(d2.w())) return ZERO;
     return sign_of(d1.w()) == POSITIVE ? NEGATIVE : POSITIVE;  // 0 = [1,0] < [-1,0]
   }
-  return sign_of_poly([](const auto& w1, const auto& x1, const auto& w2, const auto& x2) { return x1 * w2 - w1 * x2; },
-                      d1.w(), d1.x(), d2.w(), d2.x());
+  return sign_of_poly([](const auto& p, const auto& q) { return p.x * q.w - p.w * q.x; }, d1, d2);
 }
 
 namespace detail {
@@ -85,23 +86,19 @@ namespace detail {
 /// vectors a, c and b, c of R³. NEGATIVE when ∠(a o c) < ∠(b o c).
 template <class T>
 Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
-  auto dot = [](const auto& p, const auto& q, const auto& r, const auto& s, const auto& t, const auto& u) {
-    return p * s + q * t + r * u;
-  };
-  const Sign sp = sign_of_poly(dot, a.w(), a.x(), a.y(), c.w(), c.x(), c.y());
-  const Sign sq = sign_of_poly(dot, b.w(), b.x(), b.y(), c.w(), c.x(), c.y());
+  auto dot = [](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x + p.y * q.y; };
+  const Sign sp = sign_of_poly(dot, a, c);
+  const Sign sq = sign_of_poly(dot, b, c);
   // The angle shrinks as cos = (v.c)/(|v||c|) grows; compare (a.c)/|a| with (b.c)/|b|.
   if (sp != sq) return sp > sq ? NEGATIVE : POSITIVE;
   if (sp == ZERO) return ZERO;
   // Same strict sign: compare (a.c)^2 |b|^2 with (b.c)^2 |a|^2.
   const Sign e = sign_of_poly(
-      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-         const auto& cw, const auto& cx, const auto& cy) {
-        const auto p = aw * cw + ax * cx + ay * cy;
-        const auto q = bw * cw + bx * cx + by * cy;
-        return p * p * (bw * bw + bx * bx + by * by) - q * q * (aw * aw + ax * ax + ay * ay);
+      [dot](const auto& u, const auto& v, const auto& r) {
+        const auto p = dot(u, r), q = dot(v, r);
+        return p * p * dot(v, v) - q * q * dot(u, u);
       },
-      a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y());
+      a, b, c);
   // e > 0: |cos a| > |cos b|. With positive cosines the larger is the smaller angle.
   return sp == POSITIVE ? -e : e;
 }
@@ -133,6 +130,10 @@ Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, co
 ///   on where the origin [1, 0, 0] is.
 template <class T>
 Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (detail::all_one(a.w(), b.w(), c.w()))  // three Cartesian points: distance_double.hpp
+      return detail::compare_distance2(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
+  }
   const int ia = a.w() == 0, ib = b.w() == 0, ic = c.w() == 0;
   if (ia + ib + ic >= 2) return detail::compare_angles_at_origin(a, b, c);
   const Sign sa = sign_of(a.w()), sb = sign_of(b.w()), sc = sign_of(c.w());
@@ -143,9 +144,8 @@ Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const Basi
           "compare_distance(a, b, c) is undefined when c is on Omega and a, b are proper points on "
           "opposite sides: approaching c from the front or from the back gives opposite answers");
     const Sign s = sign_of_poly(
-        [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-           const auto& ux, const auto& uy) { return aw * (ux * bx + uy * by) - bw * (ux * ax + uy * ay); },
-        a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.x(), c.y());
+        [](const auto& p, const auto& q, const auto& u) { return p.w * (u.x * q.x + u.y * q.y) - q.w * (u.x * p.x + u.y * p.y); },
+        a, b, c);
     return sa * s;  // sign(|a_w| key(b) - |b_w| key(a)) up to the positive |a_w b_w|
   }
   if (ia) return sb == sc ? POSITIVE : NEGATIVE;  // +inf against finite / beyond infinity
@@ -154,13 +154,12 @@ Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const Basi
   const Sign ra = sa * sc, rb = sb * sc;  // the sides of a and b relative to c
   if (ra != rb) return ra == POSITIVE ? NEGATIVE : POSITIVE;
   const Sign e = sign_of_poly(
-      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-         const auto& cw, const auto& cx, const auto& cy) {
-        const auto ex = ax * cw - cx * aw, ey = ay * cw - cy * aw;  // (A - C) a_w c_w
-        const auto fx = bx * cw - cx * bw, fy = by * cw - cy * bw;  // (B - C) b_w c_w
-        return (ex * ex + ey * ey) * (bw * bw) - (fx * fx + fy * fy) * (aw * aw);
+      [](const auto& p, const auto& q, const auto& r) {
+        const auto ex = p.x * r.w - r.x * p.w, ey = p.y * r.w - r.y * p.w;  // (A - C) a_w c_w
+        const auto fx = q.x * r.w - r.x * q.w, fy = q.y * r.w - r.y * q.w;  // (B - C) b_w c_w
+        return (ex * ex + ey * ey) * (q.w * q.w) - (fx * fx + fy * fy) * (p.w * p.w);
       },
-      a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y());
+      a, b, c);
   // e = sign(|A-C|^2 - |B-C|^2): the Euclidean order on c's side, reversed beyond infinity.
   return ra == POSITIVE ? e : -e;
 }

@@ -21,8 +21,10 @@
 /// (counter-clockwise for ⟨1, 0, 0⟩, as `compare_angle` orders directions).
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
+#include "t2/distance_double.hpp"
 #include "t2/error.hpp"
 #include "t2/filter.hpp"
 #include "t2/line.hpp"
@@ -47,11 +49,15 @@ T normal_scale(const BasicPoint<T>& p) {
   return ax < ay ? ay : ax;
 }
 
-/// sign(u/s - v/t) for positive s, t.
+/// sign(u/s - v/t) for positive s, t: on doubles the fast path of distance_double.hpp.
 template <class T>
 Sign compare_ratios(const T& u, const T& s, const T& v, const T& t) {
-  return sign_of_poly([](const auto& a, const auto& b, const auto& c, const auto& d) { return a * d - c * b; }, u, s,
-                      v, t);
+  if constexpr (std::is_same_v<T, double>) {
+    return compare_ratios_double(u, s, v, t);
+  } else {
+    return sign_of_poly([](const auto& a, const auto& b, const auto& c, const auto& d) { return a * d - c * b; }, u,
+                        s, v, t);
+  }
 }
 
 }  // namespace detail
@@ -128,8 +134,7 @@ Sign compare_along_line(const BasicLine<T>& l, const BasicPoint<T>& p, const Bas
   if (rp != rq) return rp < rq ? NEGATIVE : POSITIVE;
   if (rp == 0 || rp == 2) return ZERO;  // a single point in each of these classes
   // Both in the same open half circle: q follows p iff (p x q) . n > 0, n = (W, X, Y).
-  return -sign_of_poly([](const auto& a, const auto& b, const auto& n) { return det3(a.w, a.x, a.y, b.w, b.x, b.y, n.W, n.X, n.Y); },
-                       p, q, l);
+  return -orient(p, q, BasicPoint<T>(l.W(), l.X(), l.Y()));  // the normal of l as a triple
 }
 
 /// The points of l sorted along l, cut at its start (see the file comment); equal points keep
