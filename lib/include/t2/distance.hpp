@@ -103,6 +103,41 @@ Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, co
   return sp == POSITIVE ? -e : e;
 }
 
+/// compare_distance on any points (see there); out of line, so that the Cartesian fast path
+/// of `compare_distance` keeps only its own loads and operations.
+template <class T>
+[[gnu::noinline]] Sign compare_distance_general(const BasicPoint<T>& a, const BasicPoint<T>& b,
+                                                const BasicPoint<T>& c) {
+  const int ia = a.w() == 0, ib = b.w() == 0, ic = c.w() == 0;
+  if (ia + ib + ic >= 2) return compare_angles_at_origin(a, b, c);
+  const Sign sa = sign_of(a.w()), sb = sign_of(b.w()), sc = sign_of(c.w());
+  if (ic) {
+    // Sweep rule: compare key(v) = u.(v_x, v_y)/|v_w| of a and b, the larger being nearer.
+    if (sa != sb)
+      throw Undefined(
+          "compare_distance(a, b, c) is undefined when c is on Omega and a, b are proper points on "
+          "opposite sides: approaching c from the front or from the back gives opposite answers");
+    const Sign s = sign_of_poly(
+        [](const auto& p, const auto& q, const auto& u) { return p.w * (u.x * q.x + u.y * q.y) - q.w * (u.x * p.x + u.y * p.y); },
+        a, b, c);
+    return sa * s;  // sign(|a_w| key(b) - |b_w| key(a)) up to the positive |a_w b_w|
+  }
+  if (ia) return sb == sc ? POSITIVE : NEGATIVE;  // +inf against finite / beyond infinity
+  if (ib) return sa == sc ? NEGATIVE : POSITIVE;
+  // All proper: the T1 order of the squared distances.
+  const Sign ra = sa * sc, rb = sb * sc;  // the sides of a and b relative to c
+  if (ra != rb) return ra == POSITIVE ? NEGATIVE : POSITIVE;
+  const Sign e = sign_of_poly(
+      [](const auto& p, const auto& q, const auto& r) {
+        const auto ex = p.x * r.w - r.x * p.w, ey = p.y * r.w - r.y * p.w;  // (A - C) a_w c_w
+        const auto fx = q.x * r.w - r.x * q.w, fy = q.y * r.w - r.y * q.w;  // (B - C) b_w c_w
+        return (ex * ex + ey * ey) * (q.w * q.w) - (fx * fx + fy * fy) * (p.w * p.w);
+      },
+      a, b, c);
+  // e = sign(|A-C|^2 - |B-C|^2): the Euclidean order on c's side, reversed beyond infinity.
+  return ra == POSITIVE ? e : -e;
+}
+
 }  // namespace detail
 
 /// Is a nearer to c than b is? Returns NEGATIVE when d(a, c) < d(b, c), ZERO when the distances
@@ -131,37 +166,10 @@ Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, co
 template <class T>
 Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
   if constexpr (std::is_same_v<T, double>) {
-    if (detail::all_one(a.w(), b.w(), c.w()))  // three Cartesian points: distance_double.hpp
+    if (detail::all_one(a.w(), b.w(), c.w())) [[likely]]  // three Cartesian points: distance_double.hpp
       return detail::compare_distance2(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
   }
-  const int ia = a.w() == 0, ib = b.w() == 0, ic = c.w() == 0;
-  if (ia + ib + ic >= 2) return detail::compare_angles_at_origin(a, b, c);
-  const Sign sa = sign_of(a.w()), sb = sign_of(b.w()), sc = sign_of(c.w());
-  if (ic) {
-    // Sweep rule: compare key(v) = u.(v_x, v_y)/|v_w| of a and b, the larger being nearer.
-    if (sa != sb)
-      throw Undefined(
-          "compare_distance(a, b, c) is undefined when c is on Omega and a, b are proper points on "
-          "opposite sides: approaching c from the front or from the back gives opposite answers");
-    const Sign s = sign_of_poly(
-        [](const auto& p, const auto& q, const auto& u) { return p.w * (u.x * q.x + u.y * q.y) - q.w * (u.x * p.x + u.y * p.y); },
-        a, b, c);
-    return sa * s;  // sign(|a_w| key(b) - |b_w| key(a)) up to the positive |a_w b_w|
-  }
-  if (ia) return sb == sc ? POSITIVE : NEGATIVE;  // +inf against finite / beyond infinity
-  if (ib) return sa == sc ? NEGATIVE : POSITIVE;
-  // All proper: the T1 order of the squared distances.
-  const Sign ra = sa * sc, rb = sb * sc;  // the sides of a and b relative to c
-  if (ra != rb) return ra == POSITIVE ? NEGATIVE : POSITIVE;
-  const Sign e = sign_of_poly(
-      [](const auto& p, const auto& q, const auto& r) {
-        const auto ex = p.x * r.w - r.x * p.w, ey = p.y * r.w - r.y * p.w;  // (A - C) a_w c_w
-        const auto fx = q.x * r.w - r.x * q.w, fy = q.y * r.w - r.y * q.w;  // (B - C) b_w c_w
-        return (ex * ex + ey * ey) * (q.w * q.w) - (fx * fx + fy * fy) * (p.w * p.w);
-      },
-      a, b, c);
-  // e = sign(|A-C|^2 - |B-C|^2): the Euclidean order on c's side, reversed beyond infinity.
-  return ra == POSITIVE ? e : -e;
+  return detail::compare_distance_general(a, b, c);
 }
 
 }  // namespace t2

@@ -22,8 +22,8 @@
 ///
 /// **Comparing two ratios u/s and v/t (s, t > 0), the normalized coordinates of
 /// lexicographic.hpp.** Δ = u·t − v·s. When s = t the sign is that of fl(u − v), which is exact
-/// (a difference of doubles rounds to zero only when it is zero, and rounding keeps its sign):
-/// this is the Cartesian case s = t = 1. Otherwise l = fl(u·t), r = fl(v·s), det = fl(l − r):
+/// (a difference of doubles rounds to zero only when it is zero, and rounding keeps its sign),
+/// i.e. the order of u and v: this is the Cartesian case s = t = 1. Otherwise l = fl(u·t), r = fl(v·s), det = fl(l − r):
 /// each monomial meets 2 roundings, |u·t| ≤ |l|/(1 − u), and the code's bound fl(fl(C_r·fl(|l| +
 /// |r|)) + 2⁻¹⁰⁰⁰) ≥ C_r(1 − u)²(|l| + |r|) + 2⁻¹⁰⁰¹ exceeds γ₂/(1 − u)·(|l| + |r|) with C_r = 2u(1
 /// + 2⁻⁴⁰); underflow (two products, the bound) and overflow as above.
@@ -94,7 +94,7 @@ inline Sign compare_distance2(double ax, double ay, double bx, double by, double
 /// sign(u/s − v/t) for s, t > 0: exact (see the file comment).
 inline Sign compare_ratios_double(double u, double s, double v, double t) {
   count_call();
-  if (s == t) return sign_of(u - v);  // exact
+  if (s == t) return static_cast<Sign>((u > v) - (u < v));  // exact
   const double l = u * t, r = v * s, det = l - r;
   const double bound = kRatioBound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000;
   const int sign = (det > bound) - (-det > bound);

@@ -74,12 +74,27 @@ Sign compare_y(const BasicPoint<T>& p, const BasicPoint<T>& q) {
   return detail::compare_ratios(p.y(), detail::normal_scale(p), q.y(), detail::normal_scale(q));
 }
 
+namespace detail {
+/// compare_xy on normalized coordinates, out of line (the Cartesian case is inline).
+template <class T>
+[[gnu::noinline]] Sign compare_xy_general(const BasicPoint<T>& p, const BasicPoint<T>& q) {
+  const Sign s = compare_x(p, q);
+  return s != ZERO ? s : compare_y(p, q);
+}
+}  // namespace detail
+
 /// Compares normalized (x, y) lexicographically, ignoring the side: for two front points this
 /// is CGAL's `compare_xy`. Exact.
 template <class T>
 Sign compare_xy(const BasicPoint<T>& p, const BasicPoint<T>& q) {
-  const Sign s = compare_x(p, q);
-  return s != ZERO ? s : compare_y(p, q);
+  if constexpr (std::is_same_v<T, double>) {
+    if (detail::all_one(p.w(), q.w())) {  // Cartesian: comparisons of doubles are exact
+      const int sx = (p.x() > q.x()) - (p.x() < q.x());
+      if (sx != 0) [[likely]] return static_cast<Sign>(sx);
+      return static_cast<Sign>((p.y() > q.y()) - (p.y() < q.y()));
+    }
+  }
+  return detail::compare_xy_general(p, q);
 }
 
 /// The lexicographic wxy order of §4.3.3 on normalized coordinates: NEGATIVE when p < q, so
