@@ -8,6 +8,7 @@
 
 #include "t2/number.hpp"
 #include "t2/point.hpp"
+#include "t2/t1.hpp"
 
 namespace t2::testing {
 
@@ -25,15 +26,26 @@ std::array<Rational, 3> triple(const P& p) {
   return {q(p.w()), q(p.x()), q(p.y())};
 }
 
-/// The drawn (Cartesian) position (x/w, y/w) of a proper point, exactly.
+/// A drawn (Cartesian) position (X, Y), exactly.
+using Pos = std::array<Rational, 2>;
+
+/// The drawn position (x/w, y/w) of a proper point, exactly.
 template <class P>
-std::pair<Rational, Rational> pos(const P& p) {
-  return {q(p.x()) / q(p.w()), q(p.y()) / q(p.w())};
+Pos pos(const P& p) {
+  return {Rational(q(p.x()) / q(p.w())), Rational(q(p.y()) / q(p.w()))};
+}
+/// The drawn position of a proper point given by its integer triple [w, x, y].
+inline Pos pos(const std::array<Integer, 3>& p) { return {Rational(p[1]) / p[0], Rational(p[2]) / p[0]}; }
+
+/// The finite value x/w of a point of T¹ with w ≠ 0, exactly.
+template <class T>
+Rational value(const BasicT1<T>& v) {
+  return q(v.x()) / q(v.w());
 }
 
 /// The squared Euclidean distance of two positions.
-inline Rational sq(const std::pair<Rational, Rational>& a, const std::pair<Rational, Rational>& b) {
-  const Rational dx = a.first - b.first, dy = a.second - b.second;
+inline Rational sq(const Pos& a, const Pos& b) {
+  const Rational dx = a[0] - b[0], dy = a[1] - b[1];
   return dx * dx + dy * dy;
 }
 

@@ -11,23 +11,16 @@ namespace {
 using testing::combo;
 using testing::coords;
 using testing::det_oracle;
+using testing::pos;
 using testing::pt;
 using testing::scale;
 using testing::Small;
+using testing::sq;
 
 template <class T>
 class CircleT : public ::testing::Test {};
 TYPED_TEST_SUITE(CircleT, testing::CoordinateTypes);
 
-std::array<Rational, 2> cart(const std::array<Integer, 3>& p) {
-  Rational x(p[1], p[0]), y(p[2], p[0]);
-  x.canonicalize();
-  y.canonicalize();
-  return {x, y};
-}
-Rational dist2(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) {
-  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
-}
 
 TYPED_TEST(CircleT, RadiusKinds) {
   using T = TypeParam;
@@ -57,7 +50,7 @@ TYPED_TEST(CircleT, DiameterOnOneSideHasTheMidpointAsCentre) {
     const auto c = circle_from_diameter(pt<T>(pa), pt<T>(qa));
     const auto C = coords(c.center()), P = coords(pt<T>(pa)), Q = coords(pt<T>(qa));
     ASSERT_EQ(sgn(C[0]), sgn(P[0]));
-    const auto cc = cart(C), cp = cart(P), cq = cart(Q);
+    const auto cc = pos(C), cp = pos(P), cq = pos(Q);
     ASSERT_EQ(cc[0] * 2, cp[0] + cq[0]);
     ASSERT_EQ(cc[1] * 2, cp[1] + cq[1]);
     ASSERT_EQ(radius_kind(c), RadiusKind::finite);
@@ -102,10 +95,10 @@ TYPED_TEST(CircleT, CircumcircleIsEquidistantOnTheSameSide) {
     const auto c = circle_through(pt<T>(v[0]), pt<T>(v[1]), pt<T>(v[2]));
     const auto C = coords(c.center());
     ASSERT_EQ(sgn(C[0]), sgn(A[0]));  // on the points' side
-    const auto cc = cart(C);
-    const Rational r = dist2(cc, cart(A));
-    ASSERT_EQ(dist2(cc, cart(B)), r);
-    ASSERT_EQ(dist2(cc, cart(Cc)), r);
+    const auto cc = pos(C);
+    const Rational r = sq(cc, pos(A));
+    ASSERT_EQ(sq(cc, pos(B)), r);
+    ASSERT_EQ(sq(cc, pos(Cc)), r);
     ASSERT_EQ(c.orientation(), sign_of(det_oracle(A, B, Cc)));
     ASSERT_EQ(radius_kind(c), RadiusKind::finite);
     ++n;
@@ -143,7 +136,7 @@ TYPED_TEST(CircleT, ThreePointsOnBothSidesAreDefinedOnlyWhenCollinear) {
       // Centre on Ω, perpendicular to the line, on the positive side of p ∨ q.
       const auto C = coords(c.center());
       ASSERT_EQ(C[0], 0);
-      const auto cp = cart(P), cq = cart(Q);
+      const auto cp = pos(P), cq = pos(Q);
       ASSERT_EQ((cq[0] - cp[0]) * C[1] + (cq[1] - cp[1]) * C[2], 0);
       ASSERT_GT(det_oracle(P, Q, C), 0);
       ASSERT_EQ(radius_kind(c), RadiusKind::infinite);

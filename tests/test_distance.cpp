@@ -285,8 +285,7 @@ TEST(CompareDistance, AngleRuleWithProperCentreIsTheLimit) {
     const ExactPoint c(cw, u(rng), u(rng));
     const int approach = s(rng) ? 1 : -1;
     auto far = [&](const Unit& v, const Integer& R) {  // drawn at approach * R * v / |v|
-      return std::pair<Rational, Rational>{Rational(approach * R * v.x) / v.len,
-                                           Rational(approach * R * v.y) / v.len};
+      return testing::Pos{Rational(approach * R * v.x) / v.len, Rational(approach * R * v.y) / v.len};
     };
     auto e = [&](const Integer& R) -> Rational { return sq(far(ua, R), pos(c)) - sq(far(ub, R), pos(c)); };
     const Rational alpha = (e(R2) - e(R1)) / Rational(R2 - R1);

@@ -22,21 +22,16 @@ using testing::make;
 using testing::orient_oracle;
 using testing::q;
 
-struct Pos {
-  Rational x, y;
-};
-template <class P>
-Pos pos(const P& p) {
-  return {q(p.x()) / q(p.w()), q(p.y()) / q(p.w())};
-}
-Rational sq(const Pos& a, const Pos& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
+using testing::pos;
+using testing::Pos;
+using testing::sq;
 
 /// The circumcentre of three non-collinear positions (intersection of perpendicular bisectors).
 Pos circumcentre(const Pos& a, const Pos& b, const Pos& c) {
-  const Rational den = 2 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
-  const Rational la = a.x * a.x + a.y * a.y, lb = b.x * b.x + b.y * b.y, lc = c.x * c.x + c.y * c.y;
-  return {(la * (b.y - c.y) + lb * (c.y - a.y) + lc * (a.y - b.y)) / den,
-          (la * (c.x - b.x) + lb * (a.x - c.x) + lc * (b.x - a.x)) / den};
+  const Rational den = 2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
+  const Rational la = sq(a, Pos{0, 0}), lb = sq(b, Pos{0, 0}), lc = sq(c, Pos{0, 0});
+  return {Rational((la * (b[1] - c[1]) + lb * (c[1] - a[1]) + lc * (a[1] - b[1])) / den),
+          Rational((la * (c[0] - b[0]) + lb * (a[0] - c[0]) + lc * (b[0] - a[0])) / den)};
 }
 
 /// The definition, with rationals only.
@@ -52,8 +47,8 @@ Sign in_circle_oracle(const P& a, const P& b, const P& c, const P& d) {
 /// The centre as a point of T² on the side sigma of a, b, c.
 ExactPoint centre_point(const Pos& z, int sigma) {
   Integer l;
-  mpz_lcm(l.get_mpz_t(), z.x.get_den_mpz_t(), z.y.get_den_mpz_t());
-  const Rational zx = z.x * l, zy = z.y * l;  // integers now
+  mpz_lcm(l.get_mpz_t(), z[0].get_den_mpz_t(), z[1].get_den_mpz_t());
+  const Rational zx = z[0] * l, zy = z[1] * l;  // integers now
   return ExactPoint(Integer(sigma * l), Integer(sigma * zx.get_num()), Integer(sigma * zy.get_num()));
 }
 

@@ -22,19 +22,8 @@ template <class T>
 class RectT : public ::testing::Test {};
 TYPED_TEST_SUITE(RectT, testing::CoordinateTypes);
 
-// Cartesian coordinates of a proper point, as exact rationals.
-std::array<Rational, 2> cart(const std::array<Integer, 3>& p) {
-  Rational x(p[1], p[0]), y(p[2], p[0]);
-  x.canonicalize();
-  y.canonicalize();
-  return {x, y};
-}
-template <class T>
-Rational value(const BasicT1<T>& v) {  // a finite T¹ value x/w
-  Rational r(Integer(v.x()), Integer(v.w()));
-  r.canonicalize();
-  return r;
-}
+using testing::value;
+using testing::pos;
 
 template <class T>
 BasicT1<T> random_extent(Small& g, bool allow_infinite) {
@@ -57,14 +46,14 @@ TYPED_TEST(RectT, VerticesMatchCartesianOracle) {
     const auto dx = random_extent<T>(g, false), dy = random_extent<T>(g, false);
     const Sign o = (i % 2) ? POSITIVE : NEGATIVE;
     const BasicIsoRect<T> r(a, dx, dy, o);
-    const auto A = cart(coords(a));
+    const auto A = pos(coords(a));
     const Rational DX = value(dx), DY = value(dy);
     const std::array<Rational, 2> want[4] = {A, {A[0] + DX, A[1]}, {A[0] + DX, A[1] + DY}, {A[0], A[1] + DY}};
     for (int k = 0; k < 4; ++k) {
       const auto v = coords(r.corner(k));
       ASSERT_EQ(sign_of(v[0]), sign_of(Integer(at[0])));  // every vertex on a's side
-      ASSERT_EQ(cart(v)[0], want[k][0]);
-      ASSERT_EQ(cart(v)[1], want[k][1]);
+      ASSERT_EQ(pos(v)[0], want[k][0]);
+      ASSERT_EQ(pos(v)[1], want[k][1]);
     }
     // The boundary traversed with the stored orientation.
     const Sign turn = orient(r.vertex(0), r.vertex(1), r.vertex(3));
@@ -174,7 +163,7 @@ TYPED_TEST(RectT, BoxBoundsAndContainsMatchOracle) {
   Small g(33, 7);
   for (int i = 0; i < 1000 * scale(); ++i) {
     const auto b = random_box<T>(g, (i % 2) ? 1 : -1);
-    const auto A = cart(coords(b.a()));
+    const auto A = pos(coords(b.a()));
     const Bounds bd = bounds_of(b);
     // Oracle bounds straight from a and Δ.
     const BasicT1<T> D[2] = {b.dx(), b.dy()};
@@ -194,7 +183,7 @@ TYPED_TEST(RectT, BoxBoundsAndContainsMatchOracle) {
       const auto P = coords(pt<T>(p));
       bool want = false;
       if (p[0] != 0 && (p[0] > 0 ? 1 : -1) == bd.side) {
-        const auto C = cart(P);
+        const auto C = pos(P);
         want = true;
         for (int k = 0; k < 2; ++k) {
           if (bd.lo[k] && C[k] < *bd.lo[k]) want = false;
@@ -265,7 +254,7 @@ TYPED_TEST(RectT, BBoxOfPointsIsTheSmallestBox) {
         if (!bound->has_value()) continue;
         bool hit = false;
         for (const auto& p : pts)
-          if (is_proper(p) && cart(coords(p))[k] == **bound) hit = true;
+          if (is_proper(p) && pos(coords(p))[k] == **bound) hit = true;
         ASSERT_TRUE(hit);
       }
     }

@@ -30,11 +30,12 @@ inline ExactPoint exact(const Point& p) { return to_exact(p); }
 /// The same point (already exact).
 inline ExactPoint exact(const ExactPoint& p) { return p; }
 
-/// The oracle determinant, by the rule of Sarrus (not det3 of orient.hpp).
+/// The oracle determinant of three integer triples: oracle.hpp's exact elimination (not det3 of
+/// orient.hpp).
 inline Integer det_oracle(const std::array<Integer, 3>& a, const std::array<Integer, 3>& b,
                           const std::array<Integer, 3>& c) {
-  return a[0] * b[1] * c[2] + a[1] * b[2] * c[0] + a[2] * b[0] * c[1] - a[2] * b[1] * c[0] -
-         a[1] * b[0] * c[2] - a[0] * b[2] * c[1];
+  auto row = [](const std::array<Integer, 3>& r) { return std::array<Rational, 3>{r[0], r[1], r[2]}; };
+  return det_oracle<3>({row(a), row(b), row(c)}).get_num();  // an integer
 }
 
 /// α·a + β·b on integer triples.

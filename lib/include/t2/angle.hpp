@@ -97,7 +97,7 @@ Sign compare_angle(const BasicPoint<T>& p, const BasicPoint<T>& q) {
   const int hp = detail::angle_half(p), hq = detail::angle_half(q);
   if (hp != hq) return hp < hq ? NEGATIVE : POSITIVE;
   // Same half turn: q is ahead of p iff p_x q_y - p_y q_x > 0.
-  return sign_of_poly([](const auto& a, const auto& b) { return a.x * b.y - a.y * b.x; }, p, q);
+  return sign_of_poly([](const auto& a, const auto& b) { return a.y * b.x - a.x * b.y; }, p, q);
 }
 
 }  // namespace t2
