@@ -78,8 +78,15 @@ struct DelaunayKernel {
   static Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
     return t2::in_circle(a, b, c, d);
   }
-  /// Exact lexicographic comparison of Cartesian coordinates (the perturbation order).
-  static Sign compare_xy(const Point& p, const Point& q) { return t2::compare_xy(p, q); }
+  /// Exact lexicographic comparison of Cartesian coordinates (the perturbation order); points
+  /// with w = 1 compare their doubles directly.
+  static Sign compare_xy(const Point& p, const Point& q) {
+    if (p.w() == 1 && q.w() == 1) {
+      if (p.x() != q.x()) return p.x() < q.x() ? NEGATIVE : POSITIVE;
+      return p.y() < q.y() ? NEGATIVE : p.y() > q.y() ? POSITIVE : ZERO;
+    }
+    return t2::compare_xy(p, q);
+  }
   /// Trace hook: point `v` has just been inserted (before its flips).
   void inserted(const Triangulation&, Triangulation::Index) {}
   /// Trace hook: the edge opposite vertex 0 of t has just been flipped (t and u are the new triangles).
