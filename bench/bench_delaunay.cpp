@@ -6,6 +6,8 @@
 //   bench_delaunay --benchmark_filter='Rss/cgal/uniform'  (run each Rss case in its own process:
 //                                                       maxrss never goes down)
 //   bench_delaunay --benchmark_filter='Raw'            the same code on raw doubles (inexact)
+//   bench_delaunay --benchmark_filter='Sides'          T² input (both-sides, antipodal) against
+//                                                       uniform front input of the same size
 //
 // Inputs come from t2::gen: uniform, normal (one cluster), grid, circle (rounded), clustered
 // (64 normal clusters). Set T2_BENCH_N to change the size (default 10⁶).
@@ -163,5 +165,31 @@ void Raw(benchmark::State& state) {
   state.counters["exact/raw"] = exact_time / raw_time;
 }
 BENCHMARK(Raw)->Iterations(2)->Unit(benchmark::kSecond);
+
+// T² input (delaunay_t2.hpp): gen's both-sides (half behind, a hull across Ω) and antipodal (no
+// hull: the sphere), timed against uniform front points of the same size in the same run.
+void Sides(benchmark::State& state) {
+  t2::gen::Options o;
+  o.n = bench_n();
+  o.seed = 42;
+  o.back = 0.5;
+  const auto front = make_input(0, o.n);
+  const auto kind = state.range(0) == 0 ? t2::gen::Kind::both_sides : t2::gen::Kind::antipodal;
+  const auto pts = t2::gen::points(kind, o);
+  double front_time = 0, t2_time = 0;
+  for (auto _ : state) {
+    double t0 = cpu_now();
+    benchmark::DoNotOptimize(t2::delaunay(front).size());
+    front_time += (cpu_now() - t0);
+    t0 = cpu_now();
+    benchmark::DoNotOptimize(t2::delaunay(pts).size());
+    t2_time += (cpu_now() - t0);
+  }
+  state.counters["front_s"] = front_time / double(state.iterations());
+  state.counters["t2_s"] = t2_time / double(state.iterations());
+  state.counters["t2/front"] = t2_time / front_time;
+  state.SetLabel(std::string(t2::gen::name(kind)));
+}
+BENCHMARK(Sides)->DenseRange(0, 1)->Iterations(2)->Unit(benchmark::kSecond);
 
 }  // namespace
