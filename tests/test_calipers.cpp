@@ -25,7 +25,7 @@ using testing::pos;
 using testing::q;
 using testing::same_cycle;
 using testing::sq;
-using Q2 = std::pair<Rational, Rational>;
+using Q2 = testing::Pos;  // a drawn position, exactly (oracle.hpp)
 
 // CGAL's hull of front points, as indices (each vertex matched to the first equal input point).
 std::vector<std::size_t> cgal_hull(const std::vector<Point>& P) {
@@ -100,8 +100,8 @@ TEST(Melkman, BackSideAndAcrossOmega) {
 // a and at b (the ends of the arcs of outer normals, one of which is in their intersection).
 bool brute_antipodal(const std::vector<Q2>& H, std::size_t a, std::size_t b) {
   const std::size_t h = H.size();
-  const auto sub = [](const Q2& u, const Q2& v) { return Q2{u.first - v.first, u.second - v.second}; };
-  const auto cross = [](const Q2& u, const Q2& v) { return sgn(u.first * v.second - u.second * v.first); };
+  const auto sub = [](const Q2& u, const Q2& v) { return Q2{Rational(u[0] - v[0]), Rational(u[1] - v[1])}; };
+  const auto cross = [](const Q2& u, const Q2& v) { return sgn(u[0] * v[1] - u[1] * v[0]); };
   for (std::size_t e : {(a + h - 1) % h, a, (b + h - 1) % h, b}) {
     const Q2 d = sub(H[(e + 1) % h], H[e]);
     const int s = cross(d, sub(H[b], H[a]));
@@ -154,7 +154,7 @@ TEST(Calipers, AntipodalPairsDiameterAndWidthAgainstBruteForce) {
         Rational worst = 0;
         for (const auto& p : P) {
           const Q2 c = pos(p);
-          const Rational t = (v.first - u.first) * (c.second - u.second) - (v.second - u.second) * (c.first - u.first);
+          const Rational t = (v[0] - u[0]) * (c[1] - u[1]) - (v[1] - u[1]) * (c[0] - u[0]);
           worst = std::max(worst, Rational(t * t / sq(u, v)));
         }
         if (narrow < 0 || worst < narrow) narrow = worst;
@@ -162,7 +162,7 @@ TEST(Calipers, AntipodalPairsDiameterAndWidthAgainstBruteForce) {
       const auto w = width(P);
       ASSERT_TRUE(w.has_value());
       const Q2 u = pos(P[w->from]), v = pos(P[w->to]), c = pos(P[w->vertex]);
-      const Rational t = (v.first - u.first) * (c.second - u.second) - (v.second - u.second) * (c.first - u.first);
+      const Rational t = (v[0] - u[0]) * (c[1] - u[1]) - (v[1] - u[1]) * (c[0] - u[0]);
       EXPECT_EQ(t * t / sq(u, v), narrow);
     }
 }
