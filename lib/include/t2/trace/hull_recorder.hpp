@@ -1,0 +1,168 @@
+#pragma once
+/// @file hull_recorder.hpp
+/// @brief A trace for the hull algorithms (hull/kernel.hpp) that records every step it is told
+/// of as a `Step`: explained in words, with the stack or hull so far, and what to highlight.
+///
+/// The hull algorithms report `trace(step, index, chain)`; this recorder turns the report into
+/// a sentence that depends on the algorithm (a pop in Graham's scan is a right turn found, a
+/// `consider` in Jarvis's march is a candidate challenged). Jarvis does not report its current
+/// candidate, so the recorder follows it by the march's own rule (a point strictly right of
+/// u → q, or beyond q on its line, replaces q) and checks at every new vertex that the candidate
+/// it followed is the vertex the march chose (`consistent()`).
+///
+/// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step.
+
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "t2/hull/kernel.hpp"
+#include "t2/point.hpp"
+#include "t2/trace/recording.hpp"
+
+namespace t2::trace {
+
+/// Which hull algorithm a `HullRecorder` listens to (the wording of its steps).
+enum class HullAlgo {
+  jarvis,  ///< Jarvis's march (jarvis.hpp)
+  graham,  ///< Graham's scan (graham.hpp)
+  merge,   ///< the merge of the hemisphere hulls (merge.hpp): monotone chain, then bridges
+};
+
+/// A trace for the hull algorithms that records into a `Recording` (see the file comment).
+class HullRecorder {
+ public:
+  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();  ///< no index
+
+  /// @param algo the algorithm traced
+  /// @param P the input points (the recorder keeps a view: they must outlive it)
+  /// @param chart the chart the algorithm runs in (used to follow Jarvis's candidate)
+  /// @param out where the steps go
+  HullRecorder(HullAlgo algo, std::span<const Point> P, const Chart& chart, Recording& out)
+      : algo_(algo), P_(P), chart_(chart), out_(out) {}
+
+  /// The trace call of hull/kernel.hpp.
+  void operator()(HullStep step, std::size_t i, std::span<const std::size_t> chain) {
+    const std::vector<std::size_t> c(chain.begin(), chain.end());
+    switch (algo_) {
+      case HullAlgo::jarvis: jarvis(step, i, c); break;
+      case HullAlgo::graham: graham(step, i, c, "stack", ""); break;
+      case HullAlgo::merge:
+        if (step == HullStep::bridge)
+          bridge(i, c);
+        else
+          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ");
+        break;
+    }
+  }
+
+  /// False when Jarvis chose a vertex other than the candidate the recorder followed.
+  bool consistent() const { return consistent_; }
+
+ private:
+  static std::string p(std::size_t i) { return "p" + std::to_string(i); }
+
+  void add(const char* kind, Depth d, std::string text, const char* structure, std::vector<std::size_t> chain,
+           std::vector<std::size_t> points, std::vector<Edge> edges = {}, bool closed = false) {
+    Step s;
+    s.kind = kind;
+    s.depth = d;
+    s.text = std::move(text);
+    s.structure = structure;
+    s.chain = std::move(chain);
+    s.closed = closed;
+    s.points = std::move(points);
+    s.edges = std::move(edges);
+    out_.add(std::move(s));
+  }
+
+  // Graham's scan, and the monotone chain inside the merge (the same pushes and pops).
+  void graham(HullStep step, std::size_t i, std::vector<std::size_t> c, const char* structure,
+              const std::string& prefix) {
+    const std::size_t n = c.size();
+    if (step == HullStep::consider) {
+      current_ = i;
+      if (n < 2) {
+        add("consider", Depth::debugging, prefix + p(i) + " comes next; the " + structure + " holds one point, so it " +
+            "will be pushed.", structure, c, {i});
+      } else {
+        add("consider", Depth::debugging, prefix + p(i) + " comes next: do " + p(c[n - 2]) + ", " + p(c[n - 1]) +
+            ", " + p(i) + " turn left (counter-clockwise)?", structure, c, {i}, {{c[n - 1], i}});
+      }
+    } else if (step == HullStep::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
+      c.pop_back();
+      add("pop", Depth::lecture, prefix + p(i) + " is popped: the chain makes no left turn at " + p(i) +
+          ", so it is no vertex of this hull.", structure, c, {i});
+    } else if (step == HullStep::pop) {
+      const std::size_t below = n >= 2 ? c[n - 2] : none;
+      const std::size_t next = current_ != none ? current_ : c.front();  // closing: back to the pivot
+      std::string why = below == none ? "" : p(below) + ", " + p(i) + ", " + p(next) + " make no left turn, so ";
+      c.pop_back();
+      add("pop", Depth::lecture, prefix + p(i) + " is popped: " + why + p(i) + " is no hull vertex" +
+          (current_ == none ? " (closing the chain back to the pivot " + p(next) + ")." : "."), structure, c,
+          {i, next}, below == none ? std::vector<Edge>{} : std::vector<Edge>{{below, i}, {i, next}});
+    } else if (step == HullStep::push) {
+      current_ = none;
+      add("push", Depth::lecture, prefix + p(i) + " is pushed: the " + structure + " turns left all along.", structure,
+          c, {i});
+    }
+  }
+
+  void jarvis(HullStep step, std::size_t i, const std::vector<std::size_t>& c) {
+    if (step == HullStep::vertex) {
+      if (c.size() > 1 && cand_ != i) consistent_ = false;
+      u_ = i;
+      cand_ = none;
+      add("vertex", Depth::lecture,
+          c.size() == 1 ? p(i) + ", the first point in the chart's order (leftmost, then lowest), is a hull vertex."
+                        : p(i) + " is the next hull vertex: no point lies right of " + p(c[c.size() - 2]) + " → " +
+                              p(i) + ", and none lies beyond it on that line.",
+          "hull so far", c, {i}, c.size() > 1 ? std::vector<Edge>{{c[c.size() - 2], i}} : std::vector<Edge>{});
+      return;
+    }
+    if (step != HullStep::consider) return;
+    std::string text;
+    if (cand_ == none) {
+      cand_ = i;
+      text = p(i) + " is the first candidate for the vertex after " + p(u_) + ".";
+    } else {
+      const std::size_t q = cand_;
+      const Sign s = ExactKernel::orient(P_[u_], P_[q], P_[i]);
+      const ChartOrder<ExactKernel> order{chart_};
+      if (s < 0) {
+        cand_ = i;
+        text = p(i) + " lies right of " + p(u_) + " → " + p(q) + ": it replaces " + p(q) + " as the candidate.";
+      } else if (s == 0 && order.farther(P_[u_], P_[q], P_[i])) {
+        cand_ = i;
+        text = p(i) + " lies on the line " + p(u_) + " " + p(q) + ", beyond " + p(q) + ": it becomes the candidate.";
+      } else {
+        text = p(i) + (s == 0 ? " lies on the line " + p(u_) + " " + p(q) + ", not beyond " + p(q)
+                              : " lies left of " + p(u_) + " → " + p(q)) + ": the candidate stays " + p(q) + ".";
+      }
+    }
+    add("consider", Depth::debugging, text, "hull so far", c, {i, cand_}, {{u_, cand_}});
+  }
+
+  void bridge(std::size_t q, std::vector<std::size_t> kept) {
+    const std::size_t a = kept.back(), b = kept.front();
+    kept.push_back(q);
+    add("bridge", Depth::lecture,
+        p(q) + ", a vertex of the negative half's hull, joins: it sees the hull edges from " + p(b) + " round to " +
+            p(a) + " (their inner vertices leave), and the bridges " + p(a) + " → " + p(q) + " and " + p(q) + " → " +
+            p(b) + " close the hull.",
+        "hull so far", kept, {q}, {{a, q}, {q, b}}, true);
+  }
+
+  HullAlgo algo_;
+  std::span<const Point> P_;
+  Chart chart_;
+  Recording& out_;
+  std::size_t current_ = none;  // Graham: the point being considered (none after its push)
+  std::size_t u_ = none;        // Jarvis: the last vertex
+  std::size_t cand_ = none;     // Jarvis: the current candidate for the next vertex
+  bool consistent_ = true;
+};
+
+}  // namespace t2::trace

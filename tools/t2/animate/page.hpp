@@ -1,0 +1,15 @@
+#pragma once
+// The page of `t2 animate`: the player (tools/t2/animate/player.html, compiled in) filled with
+// the recorded steps as JSON and one SVG frame per step. One self-contained HTML file.
+#include <string>
+#include <vector>
+
+#include "t2/point.hpp"
+#include "t2/trace/step.hpp"
+
+namespace t2cli::animate {
+
+/// The whole HTML page: title, the steps (as JSON) and their frames.
+std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps);
+
+}  // namespace t2cli::animate
