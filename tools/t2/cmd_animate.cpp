@@ -89,7 +89,8 @@ void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string&
     throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
   }
   tr::Step s = step("answer", "", "triangles");
-  s.triangles = k.finite(t);
+  for (const auto& f : t.finite_triangles()) s.triangles.push_back({f[0], f[1], f[2]});  // input indices
+  std::sort(s.triangles.begin(), s.triangles.end());
   const std::string what = plain ? "incremental triangulation" : "Delaunay triangulation";
   s.text = t.dimension() < 2 ? "Fewer than three points off one line: no triangle."
                              : fmt::format("The {}: {} triangles, {} hull edges, {} duplicate points merged.", what,

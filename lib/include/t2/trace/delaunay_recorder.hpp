@@ -13,6 +13,9 @@
 /// triangulation (insert in the triangle that holds the point, or join it to the hull edges it
 /// sees), not the Delaunay one. `t2 animate triangulate` shows that one.
 ///
+/// Equal points are one vertex: the recorder names it by the smallest of their indices, as the
+/// result does.
+///
 /// Depths: the first triangle, the insertions and the flips are lecture steps; the in-circle
 /// tests are debugging steps. Each step holds every finite triangle so far.
 
@@ -41,7 +44,20 @@ class DelaunayRecorder {
   /// @param out where the steps go
   /// @param no_circle answer every in-circle test "outside" (the plain incremental triangulation)
   DelaunayRecorder(std::span<const Point> input, Recording& out, bool no_circle = false)
-      : order_(spatial_order(input)), out_(&out), no_circle_(no_circle) {}
+      : order_(spatial_order(input)), out_(&out), no_circle_(no_circle) {
+    // Equal points are one vertex, named by the smallest index (delaunay.hpp renames a vertex
+    // when a duplicate of smaller index arrives, and calls no hook): name them so from the start.
+    std::vector<std::size_t> by_xy(input.size()), smallest(input.size());
+    for (std::size_t k = 0; k < input.size(); ++k) by_xy[k] = k;
+    std::sort(by_xy.begin(), by_xy.end(), [&](std::size_t a, std::size_t b) {
+      const Sign s = t2::compare_xy(input[a], input[b]);
+      return s != ZERO ? s < 0 : a < b;
+    });
+    for (std::size_t k = 0; k < by_xy.size(); ++k)
+      smallest[by_xy[k]] = k > 0 && t2::compare_xy(input[by_xy[k - 1]], input[by_xy[k]]) == ZERO
+                               ? smallest[by_xy[k - 1]] : by_xy[k];
+    for (auto& v : order_) v = static_cast<std::uint32_t>(smallest[v]);
+  }
 
   /// Exact orientation of three points.
   static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }

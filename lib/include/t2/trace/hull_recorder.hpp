@@ -10,7 +10,10 @@
 /// u → q, or beyond q on its line, replaces q) and checks at every new vertex that the candidate
 /// it followed is the vertex the march chose (`consistent()`).
 ///
-/// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step.
+/// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step. In the
+/// merge, the monotone chains of the two halves are a sub-algorithm, one level deeper (as
+/// GeoLab's animation depth grows when an algorithm calls another): their pushes and pops are
+/// debugging steps, and the lecture level shows the bridges.
 
 #include <cstddef>
 #include <limits>
@@ -48,12 +51,12 @@ class HullRecorder {
     const std::vector<std::size_t> c(chain.begin(), chain.end());
     switch (algo_) {
       case HullAlgo::jarvis: jarvis(step, i, c); break;
-      case HullAlgo::graham: graham(step, i, c, "stack", ""); break;
+      case HullAlgo::graham: graham(step, i, c, "stack", "", Depth::lecture); break;
       case HullAlgo::merge:
         if (step == HullStep::bridge)
           bridge(i, c);
         else
-          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ");
+          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ", Depth::debugging);
         break;
     }
   }
@@ -80,7 +83,7 @@ class HullRecorder {
 
   // Graham's scan, and the monotone chain inside the merge (the same pushes and pops).
   void graham(HullStep step, std::size_t i, std::vector<std::size_t> c, const char* structure,
-              const std::string& prefix) {
+              const std::string& prefix, Depth change = Depth::lecture) {
     const std::size_t n = c.size();
     if (step == HullStep::consider) {
       current_ = i;
@@ -93,7 +96,7 @@ class HullRecorder {
       }
     } else if (step == HullStep::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
       c.pop_back();
-      add("pop", Depth::lecture, prefix + p(i) + " is popped: the chain makes no left turn at " + p(i) +
+      add("pop", change, prefix + p(i) + " is popped: the chain makes no left turn at " + p(i) +
           ", so it is no vertex of this hull.", structure, c, {i});
     } else if (step == HullStep::pop) {
       const std::size_t below = n >= 2 ? c[n - 2] : none;
@@ -105,7 +108,7 @@ class HullRecorder {
           {i, next}, below == none ? std::vector<Edge>{} : std::vector<Edge>{{below, i}, {i, next}});
     } else if (step == HullStep::push) {
       current_ = none;
-      add("push", Depth::lecture, prefix + p(i) + " is pushed: the " + structure + " turns left all along.", structure,
+      add("push", change, prefix + p(i) + " is pushed: the " + structure + " turns left all along.", structure,
           c, {i});
     }
   }

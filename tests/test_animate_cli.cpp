@@ -1,0 +1,160 @@
+// t2 animate from the command line: every algorithm writes one self-contained page whose last
+// step is the algorithm's answer (compared with t2 hull and with t2::delaunay), and bad input,
+// no hull and too many points leave the output untouched with the documented exit statuses.
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+#include "cli_testing.hpp"
+#include "t2/gen/generate.hpp"
+#include "t2/scene.hpp"
+#include "t2/triangulation/delaunay.hpp"
+
+namespace t2::testing {
+namespace {
+
+class AnimateCli : public CliTest {
+ protected:
+  // The points of a generated scene file, and the file.
+  std::vector<Point> generate(const std::string& name, gen::Kind k, std::size_t n, std::uint64_t seed) {
+    gen::Options o;
+    o.n = n;
+    o.seed = seed;
+    write(name, gen::to_text(k, o));
+    return gen::points(k, o);
+  }
+};
+
+// The JSON array after `"key":[` in the object of the page's last step (nlohmann writes the
+// keys of an object in sorted order, and the steps in order).
+std::string last_step_field(const std::string& html, const std::string& key) {
+  const auto answer = html.rfind("\"kind\":\"answer\"");
+  if (answer == std::string::npos) return "<no answer step>";
+  const auto open = html.rfind("{\"chain\":", answer);
+  const auto at = html.find("\"" + key + "\":", open);
+  if (open == std::string::npos || at == std::string::npos) return "<no " + key + ">";
+  std::size_t depth = 0, k = at + key.size() + 3;
+  const std::size_t begin = k;
+  for (; k < html.size(); ++k) {
+    depth += html[k] == '[';
+    if (html[k] == ']' && --depth == 0) break;
+  }
+  return html.substr(begin, k + 1 - begin);
+}
+
+std::vector<std::size_t> numbers(const std::string& s) {
+  std::vector<std::size_t> v;
+  static const std::regex num(R"(\d+)");
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), num); it != std::sregex_iterator(); ++it)
+    v.push_back(std::stoul(it->str()));
+  return v;
+}
+
+// True when a and b are the same cyclic sequence.
+bool same_cycle(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
+  if (a.size() != b.size()) return false;
+  if (a.empty()) return true;
+  for (std::size_t r = 0; r < a.size(); ++r)
+    if (std::equal(a.begin(), a.end(), b.begin() + 0, [&, k = std::size_t(0)](std::size_t x, std::size_t) mutable {
+          return x == b[(r + k++) % b.size()];
+        }))
+      return true;
+  return false;
+}
+
+void expect_self_contained(const std::string& html, const std::string& what) {
+  EXPECT_TRUE(has(html, "<!DOCTYPE html>")) << what;
+  EXPECT_FALSE(has(html, "<script src")) << what;
+  EXPECT_FALSE(has(html, "<link")) << what;
+  EXPECT_FALSE(has(html, "@import")) << what;
+  EXPECT_FALSE(has(html, "https://")) << what;
+  // The only http:// text is the SVG and XLink namespaces (names, never fetched).
+  std::string rest = html;
+  for (const char* ns : {"http://www.w3.org/2000/svg", "http://www.w3.org/1999/xlink"})
+    for (auto at = rest.find(ns); at != std::string::npos; at = rest.find(ns)) rest.erase(at, std::string(ns).size());
+  EXPECT_FALSE(has(rest, "http://")) << what;
+  EXPECT_TRUE(has(html, "\\u003csvg")) << what;  // the frames (escaped inside the JSON)
+}
+
+TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
+  generate("u.t2", gen::Kind::uniform, 12, 5);
+  generate("both.t2", gen::Kind::both_sides, 12, 3);
+  for (const char* file : {"u.t2", "both.t2"})
+    for (const std::string algo : {"jarvis", "graham", "merge-hull"}) {
+      const std::string what = algo + " " + file;
+      const Result r = t2("animate " + algo + " " + file + " -o out.html");
+      ASSERT_EQ(r.status, 0) << what << r.err;
+      EXPECT_TRUE(has(r.out, "out.html: ")) << r.out;
+      const std::string html = slurp(dir_ / "out.html");
+      expect_self_contained(html, what);
+      const Result h = t2(std::string("hull ") + file + " --algorithm " + (algo == "merge-hull" ? "merge" : algo));
+      ASSERT_EQ(h.status, 0);
+      EXPECT_TRUE(same_cycle(numbers(last_step_field(html, "chain")), numbers(h.out)))
+          << what << ": " << last_step_field(html, "chain") << " vs " << h.out;
+      EXPECT_TRUE(has(html, "\"depth\":1")) << what << ": no debugging step";
+    }
+}
+
+TEST_F(AnimateCli, TriangulationsEndWithTheTriangulation) {
+  const auto P = generate("d.t2", gen::Kind::disk, 12, 2);
+  std::vector<std::size_t> expected;
+  auto triangles = delaunay(P).finite_triangles();
+  std::sort(triangles.begin(), triangles.end());
+  for (const auto& t : triangles) expected.insert(expected.end(), t.begin(), t.end());
+  for (const std::string algo : {"delaunay", "triangulate"}) {
+    const Result r = t2("animate " + algo + " d.t2 -o " + algo + ".html");
+    ASSERT_EQ(r.status, 0) << algo << r.err;
+    const std::string html = slurp(dir_ / (algo + ".html"));
+    expect_self_contained(html, algo);
+    const auto got = numbers(last_step_field(html, "triangles"));
+    if (algo == "delaunay")
+      EXPECT_EQ(got, expected);
+    else
+      EXPECT_EQ(got.size(), expected.size());  // the same number of triangles (same points, same hull)
+    EXPECT_TRUE(has(html, "\"kind\":\"flip\"")) << algo;
+    EXPECT_EQ(has(html, "\"kind\":\"in-circle\""), algo == "delaunay");
+  }
+}
+
+TEST_F(AnimateCli, BadInputNoHullAndTooManyPointsLeaveTheOutputAlone) {
+  write("out.html", "old");
+  write("bad.t2", "0 0\n1 x\n");
+  Result r = t2("animate graham bad.t2 -o out.html");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "bad.t2:2")) << r.err;
+  write("anti.t2", "1 1\n0 1\n-1 -1 -1\n");
+  for (const char* algo : {"jarvis", "graham", "merge-hull"}) {
+    r = t2(std::string("animate ") + algo + " anti.t2 -o out.html");
+    EXPECT_EQ(r.status, 3) << algo;
+    EXPECT_TRUE(has(r.err, "p0 and p2 are antipodal")) << r.err;
+  }
+  r = t2("animate delaunay anti.t2 -o out.html");  // a back point: not implemented in T2
+  EXPECT_EQ(r.status, 3);
+  generate("many.t2", gen::Kind::uniform, 201, 1);
+  r = t2("animate graham many.t2 -o out.html");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "at most 200 points")) << r.err;
+  r = t2("animate quickhull bad.t2 -o out.html");
+  EXPECT_EQ(r.status, 2);
+  r = t2("animate graham bad.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(slurp(dir_ / "out.html"), "old");
+  EXPECT_EQ(files(), (std::vector<std::string>{"anti.t2", "bad.t2", "many.t2", "out.html"}));  // no temporary left
+}
+
+TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
+  write("one.t2", "0 0\n0 0\n");
+  write("line.t2", "0 0\n1 1\n2 2\n");
+  write("none.t2", "# nothing\n");
+  for (const char* file : {"one.t2", "line.t2", "none.t2"})
+    for (const char* algo : {"jarvis", "graham", "merge-hull", "triangulate", "delaunay"}) {
+      const Result r = t2(std::string("animate ") + algo + " " + file + " -o x.html");
+      EXPECT_EQ(r.status, 0) << algo << " " << file << r.err;
+      EXPECT_TRUE(has(slurp(dir_ / "x.html"), "\"kind\":\"answer\"")) << algo << " " << file;
+    }
+  const Result r = t2("animate graham line.t2 -o x.html");
+  EXPECT_EQ(numbers(last_step_field(slurp(dir_ / "x.html"), "chain")), (std::vector<std::size_t>{0, 2}));
+}
+
+}  // namespace
+}  // namespace t2::testing

@@ -1,0 +1,183 @@
+// The trace recorders of t2/trace: what they record last is the algorithm's answer, computed by
+// the algorithm itself (recording changes nothing), and the recorded steps agree with
+// properties of the answer that the recorder does not know (a popped point is no vertex; the
+// candidate Jarvis's recorder follows is the vertex the march chose; a flip's two triangles
+// are in the triangulation after it).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <set>
+#include <span>
+#include <vector>
+
+#include "t2/gen/generate.hpp"
+#include "t2/hull.hpp"
+#include "t2/trace/delaunay_recorder.hpp"
+#include "t2/trace/hull_recorder.hpp"
+#include "t2/trace/recording.hpp"
+#include "t2/triangulation/delaunay.hpp"
+
+namespace t2 {
+namespace {
+
+using trace::Depth;
+using trace::HullAlgo;
+using trace::HullRecorder;
+using trace::Recording;
+
+std::vector<Point> make(gen::Kind k, std::size_t n, std::uint64_t seed) {
+  gen::Options o;
+  o.n = n;
+  o.seed = seed;
+  return gen::points(k, o);
+}
+
+std::vector<std::size_t> iota_of(std::size_t n) {
+  std::vector<std::size_t> v(n);
+  std::iota(v.begin(), v.end(), std::size_t{0});
+  return v;
+}
+
+// Front inputs of several shapes: random, in a disk, on a circle (all vertices), on a square's
+// boundary (points inside hull edges), on an integer grid (collinear triples and duplicates).
+std::vector<std::vector<Point>> front_inputs() {
+  std::vector<std::vector<Point>> v;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed)
+    for (gen::Kind k : {gen::Kind::uniform, gen::Kind::disk, gen::Kind::circle, gen::Kind::boundary, gen::Kind::grid})
+      v.push_back(make(k, 10 + 7 * seed, seed));
+  return v;
+}
+
+TEST(HullRecorder, GrahamRecordsItsAnswerLastAndPopsNoVertex) {
+  for (const auto& P : front_inputs()) {
+    Recording rec;
+    HullRecorder r(HullAlgo::graham, P, front_chart(), rec);
+    const auto h = graham(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
+    ASSERT_FALSE(rec.empty());
+    EXPECT_EQ(rec.back().chain, h);
+    EXPECT_EQ(h, graham(std::span<const Point>(P), iota_of(P.size()), front_chart()));  // NoTrace: the same
+    std::size_t pushes = 0, pops = 0, considers = 0;
+    for (const auto& s : rec.steps()) {
+      if (s.kind == "pop") {
+        ++pops;
+        ASSERT_FALSE(s.points.empty());
+        EXPECT_EQ(std::count(h.begin(), h.end(), s.points[0]), 0) << s.text;  // popped: never a vertex
+        EXPECT_EQ(s.depth, Depth::lecture);
+      }
+      if (s.kind == "push") ++pushes;
+      if (s.kind == "consider") {
+        ++considers;
+        EXPECT_EQ(s.depth, Depth::debugging);
+      }
+    }
+    EXPECT_EQ(pushes, considers);         // every considered point is pushed once
+    EXPECT_EQ(pushes + 1 - pops, h.size());  // the pivot, plus the pushes, less the pops
+  }
+}
+
+TEST(HullRecorder, JarvisFollowsTheCandidateToEveryVertex) {
+  for (const auto& P : front_inputs()) {
+    Recording rec;
+    HullRecorder r(HullAlgo::jarvis, P, front_chart(), rec);
+    const auto h = jarvis(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
+    EXPECT_TRUE(r.consistent());
+    std::vector<std::size_t> vertices;
+    for (const auto& s : rec.steps())
+      if (s.kind == "vertex") vertices.push_back(s.points[0]);
+    EXPECT_EQ(vertices, h);
+    EXPECT_EQ(rec.back().chain, h);
+    // The last candidate is the first vertex: the march closes the hull.
+    ASSERT_EQ(rec.back().kind, "consider");
+    EXPECT_EQ(rec.back().points[1], h.front());
+  }
+}
+
+TEST(HullRecorder, MergeRecordsTheHullAtItsLastBridge) {
+  std::size_t bridged = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    gen::Options o;
+    o.n = 12 + seed;
+    o.seed = seed;
+    o.back = 0.4;
+    const auto P = gen::points(gen::Kind::both_sides, o);
+    Recording rec;
+    HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
+    const auto h = merge_hull(std::span<const Point>(P), r);
+    EXPECT_EQ(h, merge_hull(std::span<const Point>(P)));
+    // After the last bridge no insertion changes a hull of three or more vertices untraced.
+    auto last = std::find_if(rec.steps().rbegin(), rec.steps().rend(), [](const auto& s) { return s.kind == "bridge"; });
+    if (last == rec.steps().rend()) continue;
+    ++bridged;
+    EXPECT_EQ(last->chain, h);
+    EXPECT_TRUE(last->closed);
+    // Cyclically the same hull as Graham's in a chart of the hull (an independent algorithm).
+    EXPECT_EQ(std::set<std::size_t>(h.begin(), h.end()).size(), convex_hull(P, HullAlgorithm::graham).size());
+  }
+  EXPECT_GT(bridged, 6u);  // the inputs do exercise the merge
+}
+
+TEST(Recording, LevelsKeepTheOrderAndTheDepth) {
+  const auto P = make(gen::Kind::uniform, 30, 7);
+  Recording rec;
+  HullRecorder r(HullAlgo::graham, P, front_chart(), rec);
+  graham(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
+  const auto lecture = rec.at(Depth::lecture);
+  const auto all = rec.at(Depth::debugging);
+  EXPECT_EQ(all.size(), rec.size());
+  EXPECT_LT(lecture.size(), all.size());
+  std::size_t k = 0;  // lecture is a subsequence of all
+  for (const auto& s : all)
+    if (k < lecture.size() && s.text == lecture[k].text) ++k;
+  EXPECT_EQ(k, lecture.size());
+  for (const auto& s : lecture) EXPECT_EQ(s.depth, Depth::lecture);
+}
+
+std::vector<trace::Tri> sorted_triangles(const Triangulation& t) {
+  std::vector<trace::Tri> v;
+  for (const auto& f : t.finite_triangles()) v.push_back({f[0], f[1], f[2]});
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
+  for (const auto& P : front_inputs()) {
+    Recording rec;
+    const Triangulation t = delaunay_with(std::span<const Point>(P), trace::DelaunayRecorder(P, rec));
+    const auto expected = sorted_triangles(delaunay(P));  // the default kernel: the same answer
+    EXPECT_EQ(sorted_triangles(t), expected);
+    if (t.dimension() < 2) continue;
+    ASSERT_FALSE(rec.empty());
+    EXPECT_EQ(rec.back().triangles, expected);
+    EXPECT_EQ(rec.steps().front().kind, "start");
+    std::size_t inserts = 0;
+    for (const auto& s : rec.steps()) {
+      inserts += s.kind == "insert";
+      if (s.kind == "flip")
+        for (const auto& f : s.touched) EXPECT_TRUE(std::binary_search(s.triangles.begin(), s.triangles.end(), f));
+      if (s.kind == "in-circle") EXPECT_EQ(s.depth, Depth::debugging);
+    }
+    EXPECT_EQ(inserts + 3 + t.duplicates().size(), P.size());  // the first triangle, the rest inserted
+  }
+}
+
+TEST(DelaunayRecorder, WithoutCirclesATriangulationOfTheSameHull) {
+  std::size_t differ = 0;
+  for (const auto& P : front_inputs()) {
+    Recording rec;
+    const Triangulation t = delaunay_with(std::span<const Point>(P), trace::DelaunayRecorder(P, rec, true));
+    ASSERT_TRUE(t.valid()) << t.validate();
+    if (t.dimension() < 2) continue;
+    EXPECT_EQ(rec.back().triangles, sorted_triangles(t));
+    // Same vertices and hull as Delaunay's, so the same number of triangles (Euler).
+    const Triangulation d = delaunay(P);
+    EXPECT_EQ(t.finite_triangles().size(), d.finite_triangles().size());
+    EXPECT_EQ(t.hull_edges().size(), d.hull_edges().size());
+    differ += sorted_triangles(t) != sorted_triangles(d);
+    for (const auto& s : rec.steps()) EXPECT_NE(s.kind, "in-circle");
+  }
+  EXPECT_GT(differ, 0u);  // not secretly the Delaunay triangulation
+}
+
+}  // namespace
+}  // namespace t2
