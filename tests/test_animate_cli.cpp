@@ -128,8 +128,9 @@ TEST_F(AnimateCli, BadInputNoHullAndTooManyPointsLeaveTheOutputAlone) {
     EXPECT_EQ(r.status, 3) << algo;
     EXPECT_TRUE(has(r.err, "p0 and p2 are antipodal")) << r.err;
   }
-  r = t2("animate delaunay anti.t2 -o out.html");  // a back point: not implemented in T2
-  EXPECT_EQ(r.status, 3);
+  r = t2("animate delaunay anti.t2 -o out.html");  // a back point: not animated
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "front points only")) << r.err;
   generate("many.t2", gen::Kind::uniform, 201, 1);
   r = t2("animate graham many.t2 -o out.html");
   EXPECT_EQ(r.status, 2);

@@ -179,5 +179,17 @@ TEST(DelaunayRecorder, WithoutCirclesATriangulationOfTheSameHull) {
   EXPECT_GT(differ, 0u);  // not secretly the Delaunay triangulation
 }
 
+TEST(DelaunayRecorder, RecordsNothingForT2InputAndChangesNothing) {
+  gen::Options o;
+  o.n = 30;
+  o.seed = 4;
+  const auto P = gen::points(gen::Kind::both_sides, o);  // each side triangulated apart
+  Recording rec;
+  const trace::DelaunayRecorder k(P, rec);
+  EXPECT_FALSE(k.recording());
+  EXPECT_EQ(sorted_triangles(delaunay_with(std::span<const Point>(P), k)), sorted_triangles(delaunay(P)));
+  EXPECT_TRUE(rec.empty());
+}
+
 }  // namespace
 }  // namespace t2

@@ -82,6 +82,10 @@ void hull(const std::string& algo, const std::vector<t2::Point>& P, const std::s
 // Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder.
 void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
   tr::DelaunayRecorder k(P, rec, plain);
+  if (!k.recording())
+    throw t2::BadInput(fmt::format("{}: t2 animate {} takes front points only (w > 0): the triangulation of T2 input "
+                                   "(delaunay_t2.hpp: each side apart, then merged along Omega) is not animated",
+                                   name, plain ? "triangulate" : "delaunay"));
   t2::Triangulation t;
   try {
     t = t2::delaunay_with(std::span<const t2::Point>(P), k);
@@ -138,8 +142,8 @@ Action setup(CLI::App& app) {
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO: jarvis, graham, merge-hull (hulls of points of T2), triangulate (incremental\n"
       "insertion, flips only where the new point sees hull edges), delaunay (the same with\n"
-      "Lawson flips: the library's randomized incremental Delaunay). The triangulations take\n"
-      "front points only.");
+      "Lawson flips: the library's randomized incremental Delaunay). The triangulations are\n"
+      "animated for front points only.");
   app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate or delaunay")
       ->required()
       ->check(CLI::IsMember({"jarvis", "graham", "merge-hull", "triangulate", "delaunay"}));
@@ -147,8 +151,8 @@ Action setup(CLI::App& app) {
   app.add_option("-o,--output", o->out, "the HTML page to write (atomically)")->required()->type_name("OUT");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
-      "points); 3 undefined: the points have no hull (no open hemisphere holds them), or a\n"
-      "triangulation of points off the front side.");
+      "points; a triangulation of points off the front side); 3 undefined: the points have\n"
+      "no hull (no open hemisphere holds them).");
   return [o] { return animate(*o); };
 }
 

@@ -13,6 +13,10 @@
 /// triangulation (insert in the triangle that holds the point, or join it to the hull edges it
 /// sees), not the Delaunay one. `t2 animate triangulate` shows that one.
 ///
+/// Only front input is recorded: for other input `delaunay_with` triangulates each side apart
+/// (delaunay_t2.hpp) and calls the hooks with the sides' own numbering; the recorder then
+/// records nothing (`recording()` is false), and `t2 animate` refuses such input.
+///
 /// Equal points are one vertex: the recorder names it by the smallest of their indices, as the
 /// result does.
 ///
@@ -44,7 +48,8 @@ class DelaunayRecorder {
   /// @param out where the steps go
   /// @param no_circle answer every in-circle test "outside" (the plain incremental triangulation)
   DelaunayRecorder(std::span<const Point> input, Recording& out, bool no_circle = false)
-      : order_(spatial_order(input)), out_(&out), no_circle_(no_circle) {
+      : order_(spatial_order(input)), out_(&out), no_circle_(no_circle),
+        front_(std::all_of(input.begin(), input.end(), [](const Point& p) { return p.w() > 0; })) {
     // Equal points are one vertex, named by the smallest index (delaunay.hpp renames a vertex
     // when a duplicate of smaller index arrives, and calls no hook): name them so from the start.
     std::vector<std::size_t> by_xy(input.size()), smallest(input.size());
@@ -59,6 +64,9 @@ class DelaunayRecorder {
     for (auto& v : order_) v = static_cast<std::uint32_t>(smallest[v]);
   }
 
+  /// False when the input has points off the front side: then nothing is recorded.
+  bool recording() const { return front_; }
+
   /// Exact orientation of three points.
   static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
   /// Exact lexicographic comparison of Cartesian coordinates.
@@ -67,7 +75,7 @@ class DelaunayRecorder {
   /// The exact in-circle test (or NEGATIVE with `no_circle`), recorded at the debugging level.
   Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) const {
     const Sign s = no_circle_ ? NEGATIVE : t2::in_circle(a, b, c, d);
-    if (tr_ == nullptr || no_circle_) return s;
+    if (tr_ == nullptr || no_circle_ || !front_) return s;
     const std::size_t ia = input_index(a), ib = input_index(b), ic = input_index(c), id = input_index(d);
     Step st = state("in-circle", Depth::debugging, "triangles so far");
     st.text = "Is " + p(id) + " inside the circle through " + p(ia) + ", " + p(ib) + ", " + p(ic) + "? " +
@@ -83,6 +91,7 @@ class DelaunayRecorder {
 
   /// Hook: vertex v (of the triangulation's copy) has just been inserted, before its flips.
   void inserted(const Triangulation& tr, Index v) {
+    if (!front_) return;
     tr_ = &tr;
     const std::size_t iv = order_[v];
     if (first_) start(tr, v);
@@ -103,6 +112,7 @@ class DelaunayRecorder {
 
   /// Hook: the edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
   void flipped(const Triangulation& tr, Index t, Index u) {
+    if (!front_) return;
     const Index pv = tr.vertex(t, 0), q = tr.vertex(t, 1), d = tr.vertex(t, 2), r = tr.vertex(u, 2);
     Step st = state("flip", Depth::lecture, "triangles touched by the flip");
     for (Index x : {t, u})
@@ -185,6 +195,7 @@ class DelaunayRecorder {
   std::vector<std::uint32_t> order_;
   Recording* out_;
   bool no_circle_;
+  bool front_;  // every input point is on the front side (else nothing is recorded)
   const Triangulation* tr_ = nullptr;
   bool first_ = true;
 };
