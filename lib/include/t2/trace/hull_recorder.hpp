@@ -152,8 +152,8 @@ class HullRecorder {
     const std::size_t a = kept.back(), b = kept.front();
     kept.push_back(q);
     add("bridge", Depth::lecture,
-        p(q) + ", a vertex of the negative half's hull, joins: it sees the hull edges from " + p(b) + " round to " +
-            p(a) + " (their inner vertices leave), and the bridges " + p(a) + " → " + p(q) + " and " + p(q) + " → " +
+        p(q) + ", a vertex of the negative half's hull, joins: it sees the hull edges from " + p(a) + " round to " +
+            p(b) + " (their inner vertices leave), and the bridges " + p(a) + " → " + p(q) + " and " + p(q) + " → " +
             p(b) + " close the hull.",
         "hull so far", kept, {q}, {{a, q}, {q, b}}, true);
   }
