@@ -153,9 +153,12 @@ TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
     std::size_t inserts = 0;
     for (const auto& s : rec.steps()) {
       inserts += s.kind == "insert";
-      if (s.kind == "flip")
+      if (s.kind == "flip") {
         for (const auto& f : s.touched) EXPECT_TRUE(std::binary_search(s.triangles.begin(), s.triangles.end(), f));
-      if (s.kind == "in-circle") EXPECT_EQ(s.depth, Depth::debugging);
+      }
+      if (s.kind == "in-circle") {
+        EXPECT_EQ(s.depth, Depth::debugging);
+      }
     }
     EXPECT_EQ(inserts + 3 + t.duplicates().size(), P.size());  // the first triangle, the rest inserted
   }
