@@ -141,9 +141,9 @@ Action setup(CLI::App& app) {
       "debugging: every test as well). The page starts paused at the first step; its URL\n"
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO: jarvis, graham, merge-hull (hulls of points of T2), triangulate (incremental\n"
-      "insertion, flips only where the new point sees hull edges), delaunay (the same with\n"
-      "Lawson flips: the library's randomized incremental Delaunay). The triangulations are\n"
-      "animated for front points only.");
+      "insertion, flips only where the new point sees hull edges; not the sweep of\n"
+      "t2 triangulate), delaunay (the same with Lawson flips: the library's randomized\n"
+      "incremental Delaunay). The triangulations are animated for front points only.");
   app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate or delaunay")
       ->required()
       ->check(CLI::IsMember({"jarvis", "graham", "merge-hull", "triangulate", "delaunay"}));
