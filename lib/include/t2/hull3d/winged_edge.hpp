@@ -31,10 +31,14 @@ struct WingedEdge {
   };
   /// An edge with its two vertices, two faces and four wings.
   struct Edge {
-    std::uint32_t v1{}, v2{};      ///< from v1 to v2
-    std::uint32_t fccw{}, fcw{};   ///< left and right face (seen from outside)
-    std::uint32_t pccw{}, nccw{};  ///< previous and next edge in fccw's counter-clockwise boundary
-    std::uint32_t pcw{}, ncw{};    ///< previous and next edge in fcw's counter-clockwise boundary
+    std::uint32_t v1{};    ///< the tail: the edge goes from v1 to v2
+    std::uint32_t v2{};    ///< the head
+    std::uint32_t fccw{};  ///< the face on the left, seen from outside (it runs v1 -> v2)
+    std::uint32_t fcw{};   ///< the face on the right (it runs v2 -> v1)
+    std::uint32_t pccw{};  ///< the edge before this one in fccw's counter-clockwise boundary
+    std::uint32_t nccw{};  ///< the edge after this one in fccw's counter-clockwise boundary
+    std::uint32_t pcw{};   ///< the edge before this one in fcw's counter-clockwise boundary
+    std::uint32_t ncw{};   ///< the edge after this one in fcw's counter-clockwise boundary
   };
   std::vector<Vertex> vertices;  ///< the vertices
   std::vector<Edge> edges;       ///< the edges
