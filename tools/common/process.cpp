@@ -320,6 +320,7 @@ Result run_child(const Spec& spec, Handover& handover) {
     r.exit_code = WEXITSTATUS(status);
   }
   r.cpu_seconds = seconds(ru.ru_utime) + seconds(ru.ru_stime);
+  r.peak_rss_kb = ru.ru_maxrss;
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return r;
 }

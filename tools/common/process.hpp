@@ -61,6 +61,8 @@ struct Result {
   std::string err;            ///< captured stderr
   double wall_seconds = 0;    ///< elapsed time
   double cpu_seconds = 0;     ///< user + system time of the child tree (children it waited for)
+  long peak_rss_kb = 0;       ///< peak resident memory of the child (or of its largest waited-for
+                              ///< descendant), in KiB: wait4's ru_maxrss
   /// Started, not timed out, no signal, exit status 0.
   bool ok() const { return started && !timed_out && signal == 0 && exit_code == 0; }
 };

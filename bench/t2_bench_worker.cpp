@@ -1,0 +1,224 @@
+// t2_bench_worker: one measured run of one implementation, for `t2 bench` (tools/t2/cmd_bench.cpp).
+//
+//   t2_bench_worker PROBLEM IMPL INPUT N SEED
+//
+// makes N points of INPUT (t2::gen, seeded; not timed), runs IMPL once on them and prints one line
+//
+//   size=S wall=W cpu=C input_rss_kb=R
+//
+// S the answer's size (hull vertices, finite triangles), W and C the wall and CPU seconds of the
+// run alone, R the peak resident memory once the input was made. `t2 bench` runs every
+// measurement in a fresh worker and reads the worker's peak memory from wait4's rusage, so the
+// peaks of different runs never add up. This program links CGAL and qhull: they are peers of the
+// benchmarks, never dependencies of the library or of the `t2` tool.
+//
+// PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull;
+//               delaunay t2|cgal|raw|exact (raw: the same code on plain double predicates,
+//               inexact; exact: exact arithmetic on every call, no floating-point filter).
+// INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
+// cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
+// Cartesian doubles) so that every implementation sees the same doubles.
+// Exit status: 0 done; 2 bad arguments; 1 the implementation failed.
+#include <sys/resource.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/ch_akl_toussaint.h>
+
+extern "C" {
+#include <libqhull_r/qhull_ra.h>
+}
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "t2/filter.hpp"
+#include "t2/gen/generate.hpp"
+#include "t2/hull.hpp"
+#include "t2/incircle.hpp"
+#include "t2/triangulation/delaunay.hpp"
+
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct Usage : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The points of an input, all with w = 1.
+std::vector<t2::Point> make_input(const std::string& input, std::size_t n, std::uint64_t seed) {
+  t2::gen::Options o;
+  o.n = n;
+  o.seed = seed;
+  o.cartesian = true;  // circle: rounded Cartesian doubles, the same for every implementation
+  t2::gen::Kind k;
+  if (input == "normal" || input == "clustered") {
+    k = t2::gen::Kind::normal;
+    o.clusters = input == "normal" ? 1 : 64;
+  } else {
+    try {
+      k = t2::gen::kind_from_name(input);
+    } catch (const std::exception& e) {
+      throw Usage(e.what());
+    }
+  }
+  std::vector<t2::Point> pts;
+  try {
+    pts = t2::gen::points(k, o);
+  } catch (const std::exception& e) {
+    throw Usage(e.what());
+  }
+  for (auto& p : pts) {
+    if (p.w() <= 0) throw Usage("input " + input + " has points off the front side: the peers need front points");
+    if (p.w() != 1) p = t2::Point::cartesian(p.x() / p.w(), p.y() / p.w());
+  }
+  return pts;
+}
+
+std::vector<Epick::Point_2> to_cgal(const std::vector<t2::Point>& pts) {
+  std::vector<Epick::Point_2> out;
+  out.reserve(pts.size());
+  for (const auto& p : pts) out.emplace_back(p.x(), p.y());
+  return out;
+}
+
+// The hull by qhull (libqhull_r, default options): its number of vertices.
+std::size_t qhull_hull(std::vector<double>& xy) {
+  qhT qh_storage;
+  qhT* qh = &qh_storage;
+  QHULL_LIB_CHECK
+  qh_zero(qh, stderr);
+  char options[] = "qhull";
+  const int err = qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2), xy.data(), False, options, nullptr, stderr);
+  const std::size_t h = err == 0 ? static_cast<std::size_t>(qh->num_vertices) : 0;
+  qh_freeqhull(qh, !qh_ALL);
+  int curlong = 0, totlong = 0;
+  qh_memfreeshort(qh, &curlong, &totlong);
+  if (err != 0) throw std::runtime_error("qhull failed with error " + std::to_string(err));
+  return h;
+}
+
+// The Delaunay code on plain double predicates: not exact (bench_delaunay.cpp's Raw kernel).
+struct RawKernel : t2::DelaunayKernel {
+  static t2::Sign sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+    return sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
+  }
+  static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
+    return sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
+                                        d.y()));
+  }
+};
+
+// The same determinants evaluated exactly (dyadic GMP numbers) on every call: exactness without
+// the floating-point filter that makes it cheap.
+struct ExactOnlyKernel : t2::DelaunayKernel {
+  using D = t2::Dyadic;
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+    return t2::sign_of(t2::det3(D(p.w()), D(p.x()), D(p.y()), D(q.w()), D(q.x()), D(q.y()), D(r.w()), D(r.x()),
+                                D(r.y())));
+  }
+  static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
+    return t2::sign_of(t2::detail::lifted_det4(D(a.w()), D(a.x()), D(a.y()), D(b.w()), D(b.x()), D(b.y()), D(c.w()),
+                                               D(c.x()), D(c.y()), D(d.w()), D(d.x()), D(d.y())));
+  }
+};
+
+double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+long rss_kb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+// A prepared run: the conversion a peer needs is made before the clock starts.
+using Run = std::function<std::size_t()>;
+
+Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
+  static const std::map<std::string, t2::HullAlgorithm> own = {
+      {"t2", t2::HullAlgorithm::automatic}, {"graham", t2::HullAlgorithm::graham},
+      {"jarvis", t2::HullAlgorithm::jarvis}, {"monotone", t2::HullAlgorithm::monotone},
+      {"quickhull", t2::HullAlgorithm::quickhull}, {"merge", t2::HullAlgorithm::merge}};
+  if (auto it = own.find(impl); it != own.end())
+    return [&P, a = it->second] { return t2::convex_hull(P, a).size(); };
+  if (impl == "cgal") {
+    auto C = std::make_shared<std::vector<Epick::Point_2>>(to_cgal(P));
+    return [C] {
+      std::vector<Epick::Point_2> out;
+      CGAL::ch_akl_toussaint(C->begin(), C->end(), std::back_inserter(out));
+      return out.size();
+    };
+  }
+  if (impl == "qhull") {
+    auto xy = std::make_shared<std::vector<double>>();
+    xy->reserve(2 * P.size());
+    for (const auto& p : P) xy->insert(xy->end(), {p.x(), p.y()});
+    return [xy] { return qhull_hull(*xy); };
+  }
+  throw Usage("unknown hull implementation " + impl);
+}
+
+Run delaunay_run(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl == "t2") return [&P] { return t2::delaunay(P).finite_triangles().size(); };
+  if (impl == "raw") return [&P] { return t2::delaunay_with<RawKernel>(P).finite_triangles().size(); };
+  if (impl == "exact") return [&P] { return t2::delaunay_with<ExactOnlyKernel>(P).finite_triangles().size(); };
+  if (impl == "cgal") {
+    auto C = std::make_shared<std::vector<Epick::Point_2>>(to_cgal(P));
+    return [C] {
+      CGAL::Delaunay_triangulation_2<Epick> dt;
+      dt.insert(C->begin(), C->end());
+      return dt.number_of_faces();
+    };
+  }
+  throw Usage("unknown delaunay implementation " + impl);
+}
+
+int work(int argc, char** argv) {
+  if (argc != 6) throw Usage("usage: t2_bench_worker PROBLEM IMPL INPUT N SEED");
+  const std::string problem = argv[1], impl = argv[2], input = argv[3];
+  std::size_t n = 0;
+  std::uint64_t seed = 0;
+  try {
+    n = std::stoull(argv[4]);
+    seed = std::stoull(argv[5]);
+  } catch (const std::exception&) {
+    throw Usage("N and SEED are non-negative integers");
+  }
+  if (problem != "hull" && problem != "delaunay") throw Usage("unknown problem " + problem + " (hull, delaunay)");
+  const std::vector<t2::Point> P = make_input(input, n, seed);
+  const Run run = problem == "hull" ? hull_run(impl, P) : delaunay_run(impl, P);
+  const long input_rss = rss_kb();
+  const auto w0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_now();
+  const std::size_t size = run();  // the answer is destroyed inside: its memory is in the peak
+  const double cpu = cpu_now() - c0;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  std::printf("size=%zu wall=%.9g cpu=%.9g input_rss_kb=%ld\n", size, wall, cpu, input_rss);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return work(argc, argv);
+  } catch (const Usage& e) {
+    std::fprintf(stderr, "t2_bench_worker: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "t2_bench_worker: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,253 @@
+// t2 bench: one harness for every benchmark of the course. An algorithm of t2, alone or against
+// peers (CGAL, qhull, another t2 algorithm, the same code on other predicates), over a range of
+// n on a chosen generator: wall and CPU time and peak memory per run, a table on stdout, the
+// fitted growth exponent, and a log-log plot (bench_plot.cpp). Every measurement runs in a fresh
+// process of the benchmark worker (bench/t2_bench_worker.cpp: it links CGAL and qhull, this tool
+// never does), so peak memories never add up and one crash loses one run.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_plot.hpp"
+#include "bench_run.hpp"
+#include "bench_stats.hpp"
+#include "command.hpp"
+#include "t2/io.hpp"
+
+namespace t2cli {
+namespace {
+
+using namespace t2bench;
+
+struct Options {
+  std::string algo;
+  std::size_t n = 0;
+  std::string range;
+  std::string input = "uniform";
+  std::vector<std::string> vs;
+  std::string plot, csv;
+  int repeat = 1;
+  int per_decade = 2;
+  std::uint64_t seed = 1;
+};
+
+// The medians of the repeats of one implementation at one size.
+struct Row {
+  const Impl* impl;
+  std::size_t n = 0, size = 0;
+  double wall = 0, cpu = 0, peak_kb = 0, input_kb = 0;
+};
+
+// The implementations to run, the algorithm first; throws UsageError.
+std::vector<const Impl*> chosen(const Options& o) {
+  const auto names = algorithm_names();
+  if (std::find(names.begin(), names.end(), o.algo) == names.end())
+    throw UsageError(fmt::format("unknown algorithm '{}' (one of: {})", o.algo, fmt::join(names, ", ")));
+  const Impl* algo = find_impl(o.algo);
+  std::vector<const Impl*> out{algo};
+  std::vector<std::string> peers = o.vs.empty() ? default_peers(o.algo) : o.vs;
+  if (peers.size() == 1 && peers[0] == "none") peers.clear();
+  for (const auto& p : peers) {
+    const Impl* i = find_impl(p);
+    if (i == nullptr || i == algo || (*i->problem != 0 && std::string(i->problem) != algo->problem))
+      throw UsageError(fmt::format("--vs {}: not a peer of {} (peers: see t2 help bench)", p, o.algo));
+    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  }
+  return out;
+}
+
+std::vector<std::size_t> sizes(const Options& o) {
+  if (o.n != 0 && !o.range.empty()) throw UsageError("give --n or --range, not both");
+  if (o.range.empty()) return {o.n != 0 ? o.n : 100000};
+  try {
+    const auto [a, b] = parse_range(o.range);
+    return log_steps(a, b, o.per_decade);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+double load_average() {
+  double l[1] = {0};
+  return ::getloadavg(l, 1) == 1 ? l[0] : 0;
+}
+
+// One progress line on stderr, once the whole run has lasted more than a second.
+class Progress {
+ public:
+  explicit Progress(std::size_t total) : total_(total), tty_(::isatty(2) != 0) {}
+  void step(std::size_t k, const Impl& i, std::size_t n) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (s < 1) return;
+    fmt::print(stderr, "{}t2 bench: run {}/{}: {} on n = {} ({:.0f} s so far){}", tty_ ? "\r\033[K" : "", k, total_,
+               i.name, n, s, tty_ ? "" : "\n");
+    shown_ = true;
+  }
+  ~Progress() {
+    if (shown_ && tty_) fmt::print(stderr, "\r\033[K");
+  }
+
+ private:
+  std::size_t total_;
+  bool tty_, shown_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, const std::vector<std::size_t>& ns,
+                         const std::filesystem::path& worker) {
+  const std::string problem = run[0]->problem;
+  Progress progress(ns.size() * run.size() * std::size_t(o.repeat));
+  std::size_t k = 0;
+  std::vector<Row> rows;
+  for (std::size_t n : ns) {
+    std::map<const Impl*, std::vector<Measurement>> got;
+    for (int r = 0; r < o.repeat; ++r)  // repeats interleaved: a burst of load hits every peer
+      for (const Impl* i : run) {
+        progress.step(++k, *i, n);
+        got[i].push_back(measure(worker, problem, *i, o.input, n, o.seed));
+      }
+    for (const Impl* i : run) {
+      const auto& ms = got[i];
+      auto med = [&](auto field) {
+        std::vector<double> v;
+        for (const auto& m : ms) v.push_back(double(field(m)));
+        return median(v);
+      };
+      Row row{i, n, ms[0].size};
+      row.wall = med([](const Measurement& m) { return m.wall; });
+      row.cpu = med([](const Measurement& m) { return m.cpu; });
+      row.peak_kb = med([](const Measurement& m) { return m.peak_rss_kb; });
+      row.input_kb = med([](const Measurement& m) { return m.input_rss_kb; });
+      for (const auto& m : ms)
+        if (m.size != row.size) throw std::runtime_error(fmt::format("{} gave different answers on the same input", i->name));
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+const char* size_word(const std::string& problem) { return problem == "hull" ? "vertices" : "triangles"; }
+
+int bench(const Options& o) {
+  const std::vector<const Impl*> run = chosen(o);
+  const auto& inputs = input_names();
+  if (std::find(inputs.begin(), inputs.end(), o.input) == inputs.end())
+    throw UsageError(fmt::format("--input {}: one of {}", o.input, fmt::join(inputs, ", ")));
+  const std::vector<std::size_t> ns = sizes(o);
+  if (ns.front() < 1) throw UsageError("--n must be at least 1");
+  const auto worker = find_worker();
+  if (!worker) {
+    fmt::print(stderr,
+               "t2 bench: the benchmark worker t2_bench_worker is not built{} (it links CGAL and qhull, which the t2 "
+               "tool never does). Build it:\n  cmake --build --preset default --target t2_bench_worker\n(qhull "
+               "comes from Debian's libqhull-dev, see scripts/deps.sh)\n",
+               std::getenv("T2_BENCH_WORKER") ? fmt::format(" (T2_BENCH_WORKER={})", std::getenv("T2_BENCH_WORKER")) : "");
+    return kFailed;
+  }
+  std::vector<Row> rows;
+  try {
+    rows = run_all(o, run, ns, *worker);
+  } catch (const std::runtime_error& e) {
+    fmt::print(stderr, "t2 bench: {}\n", e.what());
+    return kFailed;
+  }
+  const std::string problem = run[0]->problem;
+  // The table: medians of the repeats; ratio = the algorithm's CPU time / this row's.
+  fmt::print("# t2 bench {} --input {} --seed {}: medians of {} run(s) each, every run in its own process; "
+             "load average {:.1f} on {} cores when it started\n",
+             o.algo, o.input, o.seed, o.repeat, load_average(), ::sysconf(_SC_NPROCESSORS_ONLN));
+  fmt::print("# size: hull vertices or finite triangles; peak: the worker's peak RSS (input included); run B/pt: "
+             "peak above the input, per point; ratio: {} CPU time / this row's\n",
+             o.algo);
+  fmt::print("{:<10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7}  {}\n", "impl", "n", "size", "wall_s", "cpu_s",
+             "peak_MiB", "run_B/pt", "ratio", "agrees");
+  std::vector<std::string> disagreements, notes;
+  std::string csv = "impl,n,size,wall_s,cpu_s,peak_rss_kb,input_rss_kb\n";
+  for (const Row& r : rows) {
+    const Row& ref = *std::find_if(rows.begin(), rows.end(), [&](const Row& x) { return x.n == r.n && x.impl == run[0]; });
+    std::string agrees = r.impl == run[0] ? "-" : r.size == ref.size ? "yes" : r.impl->exact ? "NO" : "differs (inexact)";
+    if (r.size != ref.size) {
+      const std::string what = fmt::format("n = {}: {} has {} {}, {} has {}", r.n, o.algo, ref.size, size_word(problem),
+                                           r.impl->name, r.size);
+      (r.impl->exact ? disagreements : notes).push_back(what);
+    }
+    fmt::print("{:<10} {:>10} {:>10} {:>10.4g} {:>10.4g} {:>9.1f} {:>8.1f} {:>7.3f}  {}\n", r.impl->name, r.n, r.size,
+               r.wall, r.cpu, r.peak_kb / 1024, (r.peak_kb - r.input_kb) * 1024 / double(r.n),
+               r.cpu > 0 ? ref.cpu / r.cpu : 0.0, agrees);
+    csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.0f},{:.0f}\n", r.impl->name, r.n, r.size, r.wall, r.cpu, r.peak_kb,
+                       r.input_kb);
+  }
+  std::vector<Series> series;
+  std::vector<std::string> growth;
+  for (const Impl* i : run) {
+    Series s{i->name, {}, {}};
+    for (const Row& r : rows)
+      if (r.impl == i) s.n.push_back(double(r.n)), s.t.push_back(r.cpu);
+    if (fit_defined(s.n, s.t)) growth.push_back(fmt::format("{} n^{:.2f}", i->name, fit_power_law(s.n, s.t).exponent));
+    series.push_back(std::move(s));
+  }
+  if (!growth.empty())
+    fmt::print("growth (least squares on log cpu time against log n): {}\n", fmt::join(growth, ", "));
+  for (const auto& n : notes) fmt::print("note: {} (an inexact peer)\n", n);
+  if (!o.plot.empty())
+    t2::write_file_atomically(o.plot, plot_svg(series, fmt::format("t2 bench {}: CPU time, input {}", o.algo, o.input),
+                                               "CPU seconds (log scale)"));
+  if (!o.csv.empty()) t2::write_file_atomically(o.csv, csv);
+  for (const auto& d : disagreements) fmt::print(stderr, "t2 bench: ANSWERS DIFFER: {}\n", d);
+  return disagreements.empty() ? kOk : kFailed;
+}
+
+std::string catalogue() {
+  std::string s = "Algorithms (ALGO) and peers (--vs):\n";
+  for (const auto& i : impls()) s += fmt::format("  {:<10} {}\n", i.name, i.what);
+  s += fmt::format("Inputs (--input, from t2 gen; normal = one cluster, clustered = 64): {}\n",
+                   fmt::join(input_names(), ", "));
+  s += "Default peers: hull --vs cgal,qhull; delaunay --vs cgal; graham --vs jarvis; --vs none for ALGO alone.\n";
+  return s;
+}
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Times ALGO (and its peers) on seeded inputs, every run in a fresh process of the benchmark\n"
+      "worker: wall and CPU time and peak memory, the medians of the repeats in a table, the\n"
+      "growth exponent fitted over a range of n, and a log-log plot. The worker checks nothing by\n"
+      "itself; this command compares the answers' sizes and fails when an exact peer disagrees.\n"
+      "Examples: t2 bench hull --n 10000000; t2 bench delaunay --input grid --repeat 3;\n"
+      "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
+      "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness).");
+  app.add_option("ALGO", o->algo, "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, delaunay")
+      ->required();
+  app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
+  app.add_option("--range", o->range, "sizes from N1 to N2 in logarithmic steps")->type_name("N1..N2");
+  app.add_option("--per-decade", o->per_decade, "steps of --range per factor 10 (default 2)")
+      ->type_name("K")
+      ->check(CLI::Range(1, 20));
+  app.add_option("--input", o->input, "the generator (default uniform)")->type_name("KIND");
+  app.add_option("--vs", o->vs, "peers, comma-separated (default: see below)")->type_name("PEER")->delimiter(',');
+  app.add_option("--repeat", o->repeat, "runs per measurement; the table gives medians (default 1)")
+      ->type_name("R")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--seed", o->seed, "the generator's seed (default 1)")->type_name("S");
+  app.add_option("--plot", o->plot, "write the log-log plot of CPU time (SVG, atomically)")->type_name("OUT.svg");
+  app.add_option("--csv", o->csv, "write the medians as CSV (atomically)")->type_name("OUT.csv");
+  app.footer(catalogue() +
+             "\nExit status: 0 done; 1 a run failed, the worker is not built, or an exact peer's answer differs;\n"
+             "2 bad usage.");
+  return [o] { return bench(*o); };
+}
+
+}  // namespace
+
+T2_COMMAND({"bench", "time algorithms against peers over n: table, growth exponent, log-log plot", setup});
+
+}  // namespace t2cli
