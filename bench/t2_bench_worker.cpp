@@ -12,8 +12,8 @@
 // peaks of different runs never add up. This program links CGAL and qhull: they are peers of the
 // benchmarks, never dependencies of the library or of the `t2` tool.
 //
-// PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull;
-//               delaunay t2|cgal|raw|exact (raw: the same code on plain double predicates,
+// PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull|raw|exact;
+//               delaunay t2|cgal|raw|exact (raw: t2's code on plain double predicates,
 //               inexact; exact: exact arithmetic on every call, no floating-point filter).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
 // cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
@@ -105,14 +105,30 @@ std::size_t qhull_hull(std::vector<double>& xy) {
   return h;
 }
 
+// Orientation on plain doubles (naive, inexact) and on dyadic GMP numbers every time (exact, no
+// filter): the two ends of the cost of exactness, for the hull and the Delaunay kernels.
+t2::Sign raw_sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
+t2::Sign raw_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+  return raw_sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
+}
+t2::Sign exact_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+  using D = t2::Dyadic;
+  return t2::sign_of(
+      t2::det3(D(p.w()), D(p.x()), D(p.y()), D(q.w()), D(q.x()), D(q.y()), D(r.w()), D(r.x()), D(r.y())));
+}
+
+struct RawHullKernel : t2::ExactKernel {
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return raw_orient(p, q, r); }
+};
+struct ExactOnlyHullKernel : t2::ExactKernel {
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return exact_orient(p, q, r); }
+};
+
 // The Delaunay code on plain double predicates: not exact (bench_delaunay.cpp's Raw kernel).
 struct RawKernel : t2::DelaunayKernel {
-  static t2::Sign sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
-  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
-    return sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
-  }
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return raw_orient(p, q, r); }
   static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
-    return sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
+    return raw_sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
                                         d.y()));
   }
 };
@@ -121,10 +137,7 @@ struct RawKernel : t2::DelaunayKernel {
 // the floating-point filter that makes it cheap.
 struct ExactOnlyKernel : t2::DelaunayKernel {
   using D = t2::Dyadic;
-  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
-    return t2::sign_of(t2::det3(D(p.w()), D(p.x()), D(p.y()), D(q.w()), D(q.x()), D(q.y()), D(r.w()), D(r.x()),
-                                D(r.y())));
-  }
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return exact_orient(p, q, r); }
   static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
     return t2::sign_of(t2::detail::lifted_det4(D(a.w()), D(a.x()), D(a.y()), D(b.w()), D(b.x()), D(b.y()), D(c.w()),
                                                D(c.x()), D(c.y()), D(d.w()), D(d.x()), D(d.y())));
@@ -153,6 +166,8 @@ Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
       {"quickhull", t2::HullAlgorithm::quickhull}, {"merge", t2::HullAlgorithm::merge}};
   if (auto it = own.find(impl); it != own.end())
     return [&P, a = it->second] { return t2::convex_hull(P, a).size(); };
+  if (impl == "raw") return [&P] { return t2::convex_hull<RawHullKernel>(P).size(); };
+  if (impl == "exact") return [&P] { return t2::convex_hull<ExactOnlyHullKernel>(P).size(); };
   if (impl == "cgal") {
     auto C = std::make_shared<std::vector<Epick::Point_2>>(to_cgal(P));
     return [C] {

@@ -12,3 +12,4 @@ t2_long_test(test_delaunay "Delaunay.*EqualsCgal:Delaunay.CocircularIndependentO
 t2_long_test(test_hull "HullCgal.*" 20)
 t2_long_test(test_hull_t2 "HullT2.*" 20)
 t2_long_test(test_orient3d "Orient3d.*" 200)
+t2_long_test(test_bench "CliBench.PeersAgreeOnEveryInput" 300)

@@ -22,8 +22,8 @@ const std::vector<Impl>& impls() {
       {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
       {"cgal", "", "cgal", "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay)", true},
       {"qhull", "hull", "qhull", "qhull (libqhull_r, default options: merges nearly collinear facets)", false},
-      {"raw", "delaunay", "raw", "t2::delaunay_with on plain double predicates (naive, inexact)", false},
-      {"exact", "delaunay", "exact", "t2::delaunay_with, exact GMP arithmetic on every call (no filter)", true},
+      {"raw", "", "raw", "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false},
+      {"exact", "", "exact", "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true},
   };
   return all;
 }

@@ -60,6 +60,8 @@ std::vector<const Impl*> chosen(const Options& o) {
     const Impl* i = find_impl(p);
     if (i == nullptr || i == algo || (*i->problem != 0 && std::string(i->problem) != algo->problem))
       throw UsageError(fmt::format("--vs {}: not a peer of {} (peers: see t2 help bench)", p, o.algo));
+    if ((p == "raw" || p == "exact") && o.algo != "hull" && o.algo != "delaunay")
+      throw UsageError(fmt::format("--vs {}: the kernels are compared on hull and delaunay only", p));
     if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
   }
   return out;
@@ -224,7 +226,7 @@ Action setup(CLI::App& app) {
       "itself; this command compares the answers' sizes and fails when an exact peer disagrees.\n"
       "Examples: t2 bench hull --n 10000000; t2 bench delaunay --input grid --repeat 3;\n"
       "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
-      "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness).");
+      "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness; hull too).");
   app.add_option("ALGO", o->algo, "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, delaunay")
       ->required();
   app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
