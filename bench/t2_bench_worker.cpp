@@ -13,6 +13,7 @@
 // benchmarks, never dependencies of the library or of the `t2` tool.
 //
 // PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull|raw|exact;
+//               layers jarvis|graham (the two ways of seed 003; size: the number of layers);
 //               delaunay t2|cgal|raw|exact (raw: t2's code on plain double predicates,
 //               inexact; exact: exact arithmetic on every call, no floating-point filter).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
@@ -41,6 +42,7 @@ extern "C" {
 #include "t2/filter.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
+#include "t2/hull/layers.hpp"
 #include "t2/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
 
@@ -185,6 +187,12 @@ Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
   throw Usage("unknown hull implementation " + impl);
 }
 
+Run layers_run(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "jarvis" && impl != "graham") throw Usage("unknown layers implementation " + impl);
+  const auto m = impl == "jarvis" ? t2::LayersMethod::jarvis : t2::LayersMethod::graham;
+  return [&P, m] { return t2::convex_layers(std::span<const t2::Point>(P), m).size(); };
+}
+
 Run delaunay_run(const std::string& impl, const std::vector<t2::Point>& P) {
   if (impl == "t2") return [&P] { return t2::delaunay(P).finite_triangles().size(); };
   if (impl == "raw") return [&P] { return t2::delaunay_with<RawKernel>(P).finite_triangles().size(); };
@@ -211,9 +219,10 @@ int work(int argc, char** argv) {
   } catch (const std::exception&) {
     throw Usage("N and SEED are non-negative integers");
   }
-  if (problem != "hull" && problem != "delaunay") throw Usage("unknown problem " + problem + " (hull, delaunay)");
+  if (problem != "hull" && problem != "delaunay" && problem != "layers")
+    throw Usage("unknown problem " + problem + " (hull, delaunay, layers)");
   const std::vector<t2::Point> P = make_input(input, n, seed);
-  const Run run = problem == "hull" ? hull_run(impl, P) : delaunay_run(impl, P);
+  const Run run = problem == "hull" ? hull_run(impl, P) : problem == "layers" ? layers_run(impl, P) : delaunay_run(impl, P);
   const long input_rss = rss_kb();
   const auto w0 = std::chrono::steady_clock::now();
   const double c0 = cpu_now();

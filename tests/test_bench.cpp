@@ -182,6 +182,17 @@ TEST_F(CliBench, PeersAgreeOnEveryInput) {
   }
 }
 
+// The convex layers both ways of seed 003 (Jarvis and Graham peeling) give the same layers.
+TEST_F(CliBench, ConvexLayersBothWays) {
+  const auto r = t2("bench layers --n 400 --input disk");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto rows = table(r.out);
+  ASSERT_EQ(rows.size(), 2u) << r.out;
+  EXPECT_GT(rows.at("layers").at(400), 5u);
+  EXPECT_EQ(rows.at("layers-graham").at(400), rows.at("layers").at(400));
+  EXPECT_EQ(t2("bench layers --vs cgal").status, 2);
+}
+
 // A worker that answers 8 for t2 and 7 for CGAL: the command must fail and say so.
 TEST_F(CliBench, DisagreementFailsLoudly) {
   const auto fake = write("fake_worker",

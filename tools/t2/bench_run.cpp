@@ -19,6 +19,8 @@ const std::vector<Impl>& impls() {
       {"monotone", "hull", "monotone", "t2's Andrew monotone chain, O(n log n)", true},
       {"quickhull", "hull", "quickhull", "t2's Quickhull", true},
       {"merge", "hull", "merge", "t2's hemisphere merge (seed 000, Algorithm 4)", true},
+      {"layers", "layers", "jarvis", "t2::convex_layers by Jarvis's march on what is left (seed 003), O(n^2)", true},
+      {"layers-graham", "layers", "graham", "t2::convex_layers by Graham's scan on what is left, O(n^2 log n)", true},
       {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
       {"cgal", "", "cgal", "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay)", true},
       {"qhull", "hull", "qhull", "qhull (libqhull_r, default options: merges nearly collinear facets)", false},
@@ -34,12 +36,13 @@ const Impl* find_impl(const std::string& name) {
   return nullptr;
 }
 
-std::vector<std::string> algorithm_names() { return {"hull", "graham", "jarvis", "monotone", "quickhull", "merge", "delaunay"}; }
+std::vector<std::string> algorithm_names() { return {"hull", "graham", "jarvis", "monotone", "quickhull", "merge", "layers", "delaunay"}; }
 
 std::vector<std::string> default_peers(const std::string& algo) {
   if (algo == "hull") return {"cgal", "qhull"};
   if (algo == "delaunay") return {"cgal"};
   if (algo == "graham") return {"jarvis"};
+  if (algo == "layers") return {"layers-graham"};
   return {};
 }
 

@@ -15,7 +15,7 @@ namespace t2bench {
 /// An implementation that `t2 bench` can time.
 struct Impl {
   const char* name;     ///< its name on the command line and in the table
-  const char* problem;  ///< what it computes: "hull", "delaunay", or "" for both
+  const char* problem;  ///< what it computes: "hull", "layers", "delaunay", or "" for hull and delaunay
   const char* worker;   ///< its name for the worker
   const char* what;     ///< one line for the help
   bool exact;           ///< exact predicates: its answer must equal the algorithm's
@@ -27,14 +27,15 @@ const std::vector<Impl>& impls();
 const Impl* find_impl(const std::string& name);
 /// The names ALGO accepts (the t2 algorithms).
 std::vector<std::string> algorithm_names();
-/// The peers measured when `--vs` is not given (hull: cgal, qhull; delaunay: cgal; graham: jarvis).
+/// The peers measured when `--vs` is not given (hull: cgal, qhull; delaunay: cgal; graham: jarvis;
+/// layers: layers-graham).
 std::vector<std::string> default_peers(const std::string& algo);
 /// The inputs (t2 gen kinds with front points, and clustered).
 const std::vector<std::string>& input_names();
 
 /// One measurement.
 struct Measurement {
-  std::size_t size = 0;     ///< the answer's size (hull vertices, finite triangles)
+  std::size_t size = 0;     ///< the answer's size (hull vertices, layers, finite triangles)
   double wall = 0;          ///< seconds of the run alone
   double cpu = 0;           ///< CPU seconds of the run alone
   long peak_rss_kb = 0;     ///< the worker's peak resident memory (input included)

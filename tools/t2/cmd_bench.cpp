@@ -58,7 +58,8 @@ std::vector<const Impl*> chosen(const Options& o) {
   if (peers.size() == 1 && peers[0] == "none") peers.clear();
   for (const auto& p : peers) {
     const Impl* i = find_impl(p);
-    if (i == nullptr || i == algo || (*i->problem != 0 && std::string(i->problem) != algo->problem))
+    const std::string problem = i == nullptr ? "" : *i->problem != 0 ? i->problem : "hull,delaunay";
+    if (i == nullptr || i == algo || problem.find(algo->problem) == std::string::npos)
       throw UsageError(fmt::format("--vs {}: not a peer of {} (peers: see t2 help bench)", p, o.algo));
     if ((p == "raw" || p == "exact") && o.algo != "hull" && o.algo != "delaunay")
       throw UsageError(fmt::format("--vs {}: the kernels are compared on hull and delaunay only", p));
@@ -137,7 +138,9 @@ std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, 
   return rows;
 }
 
-const char* size_word(const std::string& problem) { return problem == "hull" ? "vertices" : "triangles"; }
+const char* size_word(const std::string& problem) {
+  return problem == "hull" ? "vertices" : problem == "layers" ? "layers" : "triangles";
+}
 
 int bench(const Options& o) {
   const std::vector<const Impl*> run = chosen(o);
@@ -167,7 +170,7 @@ int bench(const Options& o) {
   fmt::print("# t2 bench {} --input {} --seed {}: medians of {} run(s) each, every run in its own process; "
              "load average {:.1f} on {} cores when it started\n",
              o.algo, o.input, o.seed, o.repeat, load_average(), ::sysconf(_SC_NPROCESSORS_ONLN));
-  fmt::print("# size: hull vertices or finite triangles; peak: the worker's peak RSS (input included); run B/pt: "
+  fmt::print("# size: hull vertices, layers or finite triangles; peak: the worker's peak RSS (input included); run B/pt: "
              "peak above the input, per point; ratio: {} CPU time / this row's\n",
              o.algo);
   fmt::print("{:<10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7}  {}\n", "impl", "n", "size", "wall_s", "cpu_s",
@@ -213,7 +216,8 @@ std::string catalogue() {
   for (const auto& i : impls()) s += fmt::format("  {:<10} {}\n", i.name, i.what);
   s += fmt::format("Inputs (--input, from t2 gen; normal = one cluster, clustered = 64): {}\n",
                    fmt::join(input_names(), ", "));
-  s += "Default peers: hull --vs cgal,qhull; delaunay --vs cgal; graham --vs jarvis; --vs none for ALGO alone.\n";
+  s += "Default peers: hull --vs cgal,qhull; delaunay --vs cgal; graham --vs jarvis; layers --vs layers-graham;\n"
+       "--vs none for ALGO alone.\n";
   return s;
 }
 
@@ -227,7 +231,7 @@ Action setup(CLI::App& app) {
       "Examples: t2 bench hull --n 10000000; t2 bench delaunay --input grid --repeat 3;\n"
       "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
       "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness; hull too).");
-  app.add_option("ALGO", o->algo, "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, delaunay")
+  app.add_option("ALGO", o->algo, "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, layers, delaunay")
       ->required();
   app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
   app.add_option("--range", o->range, "sizes from N1 to N2 in logarithmic steps")->type_name("N1..N2");
