@@ -145,6 +145,29 @@ TEST(Process, StdinDataIsWrittenThenClosed) {
   EXPECT_TRUE(t2proc::run(deaf).ok());
 }
 
+TEST(Process, InheritedStdinIsTheCallersAndTheChildStaysInItsGroup) {
+  // Make fd 0 of this process a file for a moment, as `t2 run 05 < in` does.
+  const fs::path in = fs::temp_directory_path() / ("t2-process-stdin-" + std::to_string(::getpid()));
+  std::ofstream(in) << "from the caller\n";
+  const int saved = ::dup(0);
+  ASSERT_GE(saved, 0);
+  const int fd = ::open(in.c_str(), O_RDONLY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::dup2(fd, 0), 0);
+  ::close(fd);
+  Spec s = sh("cat; cut -d' ' -f5 /proc/$$/stat");  // field 5: the process group
+  s.inherit_stdin = true;
+  s.stdin_data = "ignored";  // the caller's stdin wins
+  const Result r = t2proc::run(s);
+  ::dup2(saved, 0);
+  ::close(saved);
+  fs::remove(in);
+  ASSERT_TRUE(r.ok()) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n') + 1), "from the caller\n");
+  EXPECT_EQ(std::stol(r.out.substr(r.out.find('\n') + 1)), static_cast<long>(::getpgrp()))
+      << "a child reading the caller's terminal must be in the caller's (foreground) group";
+}
+
 TEST(Process, EnvironmentIsExactlyTheGivenOne) {
   Spec s;
   s.argv = {"/usr/bin/env"};

@@ -26,21 +26,11 @@ Channel& channel() {
 
 namespace {
 constexpr size_t kAnswerLimit = 8u << 20;  // bytes of one answer line
-
-bool write_all(int fd, const std::string& s) {
-  size_t off = 0;
-  while (off < s.size()) {
-    const ssize_t n = ::write(fd, s.data() + off, s.size() - off);
-    if (n <= 0) return false;
-    off += static_cast<size_t>(n);
-  }
-  return true;
-}
 }  // namespace
 
 std::string exchange(const std::string& line) {
   Channel& c = channel();
-  if (c.gone || !write_all(c.calls, line)) {
+  if (c.gone || !t2judge::write_all(c.calls, line)) {
     c.gone = true;
     throw DriverGone();
   }

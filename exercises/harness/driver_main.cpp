@@ -16,16 +16,6 @@
 
 namespace {
 
-bool write_all(int fd, const std::string& s) {
-  size_t off = 0;
-  while (off < s.size()) {
-    const ssize_t n = ::write(fd, s.data() + off, s.size() - off);
-    if (n <= 0) return false;
-    off += static_cast<size_t>(n);
-  }
-  return true;
-}
-
 std::string one_line(std::string s) {
   for (auto& c : s)
     if (c == '\n' || c == '\r') c = ' ';
@@ -74,6 +64,6 @@ int main(int argc, char** argv) {
     }
     const std::string line = pending.substr(0, nl);
     pending.erase(0, nl + 1);
-    if (!write_all(answers, answer(line) + "\n")) return 0;
+    if (!t2judge::write_all(answers, answer(line) + "\n")) return 0;
   }
 }

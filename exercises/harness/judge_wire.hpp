@@ -7,6 +7,8 @@
 // (%a: exact), integers as decimal text. Each exercise's remote.cpp uses this header twice:
 // compiled with T2_JUDGE_CHECKER it defines the exercise's API as calls over the wire (what the
 // tests link against); compiled without, it lists the driver's table of the student's functions.
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -35,6 +37,18 @@ struct WireError : std::runtime_error {
 /// Encoding (put) and decoding (take) of one value type.
 template <class T, class = void>
 struct Codec;
+
+/// Writes all of `s` to the file descriptor `fd` (a pipe of the wire); false when the other
+/// end is gone.
+inline bool write_all(int fd, const std::string& s) {
+  size_t off = 0;
+  while (off < s.size()) {
+    const ssize_t n = ::write(fd, s.data() + off, s.size() - off);
+    if (n <= 0) return false;
+    off += static_cast<size_t>(n);
+  }
+  return true;
+}
 
 /// Reads one space-separated token (throws WireError at the end of the line).
 inline std::string token(std::istream& in) {

@@ -167,7 +167,7 @@ Result run_child(const Spec& spec, Handover& handover) {
   char* const* envp = spec.env ? p.envp.data() : environ;
 
   Fd in_r, in_w, out_r, out_w, err_r, err_w, exec_r, exec_w, null_in, null_out, err_file;
-  const bool feed = !spec.stdin_data.empty();
+  const bool feed = !spec.inherit_stdin && !spec.stdin_data.empty();
   if (!make_pipe(exec_r, exec_w) || (feed && !make_pipe(in_r, in_w)) ||
       (spec.out == Stream::capture && !make_pipe(out_r, out_w)) ||
       (spec.err_file.empty() && spec.err == Stream::capture && !make_pipe(err_r, err_w))) {
@@ -183,7 +183,7 @@ Result run_child(const Spec& spec, Handover& handover) {
       return r;
     }
   }
-  const int child_in = feed ? in_r.fd : null_in.fd;
+  const int child_in = spec.inherit_stdin ? 0 : feed ? in_r.fd : null_in.fd;
   const int child_out = spec.out == Stream::capture ? out_w.fd : spec.out == Stream::discard ? null_out.fd : 1;
   const int child_err = !spec.err_file.empty() ? err_file.fd
                         : spec.err == Stream::capture ? err_w.fd
@@ -204,7 +204,7 @@ Result run_child(const Spec& spec, Handover& handover) {
 
   const pid_t pid = ::fork();
   if (pid == 0) {
-    ::setpgid(0, 0);
+    if (!spec.inherit_stdin) ::setpgid(0, 0);
     for (int s = 1; s < NSIG; ++s)
       if (s != SIGKILL && s != SIGSTOP) ::signal(s, SIG_DFL);
     ::sigprocmask(SIG_SETMASK, &old_mask, nullptr);

@@ -37,6 +37,10 @@ struct Spec {
   std::filesystem::path cwd;                    ///< empty: inherit
   std::optional<std::vector<std::string>> env;  ///< nullopt: inherit; else exactly these NAME=VALUE
   std::string stdin_data;                       ///< written to stdin then closed ("": /dev/null)
+  bool inherit_stdin = false;                   ///< the child reads the caller's stdin instead, and
+                                                ///< stays in the caller's process group (a terminal
+                                                ///< would stop a background group that reads it), so
+                                                ///< only the child itself is killed at its end
   Stream out = Stream::capture;                 ///< stdout
   Stream err = Stream::capture;                 ///< stderr
   std::filesystem::path err_file;               ///< when set, stderr goes to this file instead

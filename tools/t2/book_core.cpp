@@ -146,6 +146,7 @@ int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
   s.argv = argv;
   s.out = stdout_to_stderr ? t2proc::Stream::capture : t2proc::Stream::inherit;
   s.err = t2proc::Stream::inherit;
+  s.inherit_stdin = !stdout_to_stderr;
   const t2proc::Result r = t2proc::run(s);
   if (stdout_to_stderr) std::fwrite(r.out.data(), 1, r.out.size(), stderr);
   if (!r.started) return -1;

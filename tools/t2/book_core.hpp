@@ -82,7 +82,8 @@ std::vector<std::string> sync_book(const fs::path& root, std::vector<Problem>& p
 
 /// Runs a program (no shell, through t2proc) with this process's standard output and error and
 /// waits; returns its exit status (128+signal if killed), or -1 if it could not be started.
-/// With `stdout_to_stderr` the child's standard output is collected and then written to stderr.
+/// Without `stdout_to_stderr` it also reads this process's standard input (`t2 run 05 < in`);
+/// with it, its standard output is collected and then written to stderr, and its input is empty.
 int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr = false);
 
 }  // namespace t2cli::book

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "model_picture.hpp"
 #include "t2/draw.hpp"
 #include "t2/io.hpp"
 #include "t2/scene.hpp"
@@ -27,43 +28,6 @@ double parse_degrees(const std::string& s, const char* what, double limit) {
     throw UsageError(fmt::format("--view: {} must be a number of degrees in [-{}, {}], not '{}'", what,
                                  limit, limit, s));
   return d;
-}
-
-// The planar viewport: centred at the origin, wide enough for every finite point of the scene
-// (points at infinity sit on the Ω ring whatever the width).
-dr::PlaneView fit_plane(const t2::Scene& s) {
-  double r = 0;
-  auto see = [&](const t2::Point& p) {
-    if (p.w() == 0) return;
-    const double d = std::hypot(p.x() / p.w(), p.y() / p.w());
-    if (std::isfinite(d)) r = std::max(r, d);
-  };
-  for (const auto& p : s.points) see(p.point);
-  for (const auto& g : s.segments) {
-    see(g.a.point);
-    see(g.b.point);
-  }
-  for (const auto& g : s.polygons)
-    for (const auto& v : g.vertices) see(v.point);
-  for (const auto& g : s.lines) {
-    see(g.a.point);
-    see(g.b.point);
-  }
-  for (const auto& g : s.circles) {
-    // A finite or beyond-infinity circle reaches |C| + |P − C| from the origin.
-    const t2::Point &c = g.center.point, &p = g.through.point;
-    if (c.w() == 0 || p.w() == 0) {
-      see(c);
-      see(p);
-      continue;
-    }
-    const double cx = c.x() / c.w(), cy = c.y() / c.w();
-    const double far = std::hypot(cx, cy) + std::hypot(p.x() / p.w() - cx, p.y() / p.w() - cy);
-    if (std::isfinite(far)) r = std::max(r, far);
-  }
-  dr::PlaneView v;
-  v.half_width = std::max(1.0, 1.2 * r);
-  return v;
 }
 
 struct Options {
@@ -95,14 +59,7 @@ int draw(const Options& o) {
   const t2::Scene scene = t2::read_scene(o.file);  // ParseError: file:line: message, exit 2
   const dr::Figure fig = dr::figure_of(scene);
   const dr::PlaneView plane = fit_plane(scene);
-  std::string bytes;
-  if (o.model == "plane")
-    bytes = dr::render(fig, plane, fmt);
-  else if (o.model == "sphere")
-    bytes = dr::render(fig, o.sphere, fmt);
-  else
-    bytes = dr::render_both(fig, plane, o.sphere, fmt);
-  t2::write_file_atomically(o.output, bytes);
+  t2::write_file_atomically(o.output, render_model(fig, o.model, plane, o.sphere, fmt));
   return kOk;
 }
 

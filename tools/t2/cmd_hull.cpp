@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,8 +24,7 @@ namespace dr = t2::draw;
 struct Options {
   std::string file;
   std::string algorithm = "automatic";
-  std::string svg;
-  std::string model = "both";
+  AnswerDrawing drawing;
 };
 
 t2::HullAlgorithm algorithm_of(const std::string& s) {
@@ -35,7 +35,7 @@ t2::HullAlgorithm algorithm_of(const std::string& s) {
 }
 
 // The input points in grey, the hull in green (a polygon, a segment or a point).
-std::string picture(const std::vector<t2::Point>& P, const std::vector<std::size_t>& hull, const std::string& model) {
+dr::Figure picture(const std::vector<t2::Point>& P, const std::vector<std::size_t>& hull) {
   dr::Figure f;
   std::vector<t2::Point> h;
   for (std::size_t i : hull) h.push_back(P[i]);
@@ -45,22 +45,20 @@ std::string picture(const std::vector<t2::Point>& P, const std::vector<std::size
   for (const auto& p : P) f.add(p, dr::Style().color("#7f7f7f").layer(1));
   for (std::size_t k = 0; k < hull.size(); ++k)
     f.add(P[hull[k]], dr::Style().color("#000000").label(fmt::format("p{}", hull[k])).layer(2));
-  return render_models(f, P, model);
+  return f;
 }
 
 int hull(const Options& o) {
   const t2::HullAlgorithm a = algorithm_of(o.algorithm);
   const t2::Scene scene = read_scene_argument(o.file);
-  std::vector<t2::Point> P;
-  P.reserve(scene.points.size());
-  for (const auto& p : scene.points) P.push_back(p.point);
+  const std::vector<t2::Point> P = scene_points(scene);
   std::vector<std::size_t> h;
   try {
     h = t2::convex_hull(P, a);
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex hull: {}", scene.name, e.what()));
   }
-  if (!o.svg.empty()) t2::write_file_atomically(o.svg, picture(P, h, o.model));
+  if (!o.drawing.svg.empty()) write_drawing(o.drawing, picture(P, h), fit_plane(P));
   std::string out;
   for (std::size_t i : h) out += fmt::format("{}\n", i);
   fmt::print("{}", out);
@@ -83,10 +81,7 @@ Action setup(CLI::App& app) {
                  "merge), merge, jarvis, graham, quickhull or monotone")
       ->type_name("A")
       ->check(CLI::IsMember({"automatic", "merge", "jarvis", "graham", "quickhull", "monotone"}));
-  app.add_option("--svg", o->svg, "also draw the points and the hull to OUT (SVG, atomically)")->type_name("OUT");
-  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
-      ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  add_drawing_options(app, o->drawing, "the points and the hull");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"
       "points have no hull: the message names points that lie in no open hemisphere\n"

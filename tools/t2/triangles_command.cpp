@@ -39,7 +39,7 @@ std::string listing(const t2::Triangulation& tr, bool infinite) {
 }
 
 // The triangles in light blue with their edges, the hull in green, the points labelled pK.
-std::string picture(const std::vector<t2::Point>& P, const t2::Triangulation& tr, const std::string& model) {
+dr::Figure picture(const std::vector<t2::Point>& P, const t2::Triangulation& tr) {
   dr::Figure f;
   const dr::Style tri = dr::Style().color("#1f77b4").width(1).fill("#1f77b4").fill_opacity(0.12).layer(0);
   for (const auto& t : tr.finite_triangles()) {
@@ -60,14 +60,12 @@ std::string picture(const std::vector<t2::Point>& P, const t2::Triangulation& tr
     if (labels) s.label(fmt::format("p{}", k)); else s.size(1.5);
     f.add(P[k], s);
   }
-  return render_models(f, P, model);
+  return f;
 }
 
 int run(const TrianglesOptions& o, const std::string& command, const TriangulationBuilder& build) {
   const t2::Scene scene = read_scene_argument(o.file);
-  std::vector<t2::Point> P;
-  P.reserve(scene.points.size());
-  for (const auto& p : scene.points) P.push_back(p.point);
+  const std::vector<t2::Point> P = scene_points(scene);
   t2::Triangulation tr;
   try {
     tr = build(P, o);
@@ -79,7 +77,7 @@ int run(const TrianglesOptions& o, const std::string& command, const Triangulati
                scene.points[dropped].line, dropped, kept, scene.points[kept].line);
   if (tr.dimension() < 2 && P.size() >= 3)
     fmt::print(stderr, "t2 {}: {}: no triangle: the points are collinear\n", command, scene.name);
-  if (!o.svg.empty()) t2::write_file_atomically(o.svg, picture(P, tr, o.model));
+  if (!o.drawing.svg.empty()) write_drawing(o.drawing, picture(P, tr), fit_plane(P));
   fmt::print("{}", listing(tr, o.infinite));
   return kOk;
 }
@@ -91,11 +89,7 @@ Action triangles_setup(CLI::App& app, std::shared_ptr<TrianglesOptions> o, const
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_flag("--infinite", o->infinite,
                "also print the infinite triangles, one per hull edge a -> b, as 'b a inf'");
-  app.add_option("--svg", o->svg, "also draw the points and the triangles to OUT (SVG, atomically)")
-      ->type_name("OUT");
-  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
-      ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  add_drawing_options(app, o->drawing, "the points and the triangles");
   app.footer(
       "Output: one triangle per line, 'i j k', the 0-based indices of the scene's points (bare\n"
       "and labelled, in file order; blocks are ignored), counter-clockwise, smallest index\n"

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "model_picture.hpp"
 #include "t2/point.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
@@ -18,8 +19,7 @@ struct TrianglesOptions {
   std::string file;                   ///< the scene file, - for standard input
   std::string algorithm;              ///< t2 delaunay only
   bool infinite = false;              ///< also print the infinite triangles
-  std::string svg;                    ///< draw to this file when not empty
-  std::string model = "both";         ///< plane, sphere or both
+  AnswerDrawing drawing;              ///< --svg and --model
 };
 
 /// Builds the triangulation of the scene's points (the command's algorithm).
