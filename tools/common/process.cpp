@@ -241,7 +241,7 @@ Result run_child(const Spec& spec, Handover& handover) {
     r.error = std::string("cannot fork: ") + std::strerror(errno);
     return r;
   }
-  ::setpgid(pid, pid);
+  if (!spec.inherit_stdin) ::setpgid(pid, pid);  // also here: no race with a kill of the group
   exec_w.reset();
   in_r.reset();
   out_w.reset();

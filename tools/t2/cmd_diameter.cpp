@@ -22,7 +22,8 @@ namespace {
 namespace dr = t2::draw;
 
 struct Options {
-  std::string file, svg, model = "both";
+  std::string file;
+  AnswerDrawing drawing;
 };
 
 bool one_side(const std::vector<t2::Point>& P) {
@@ -41,8 +42,7 @@ std::string squared(const t2::Point& a, const t2::Point& b) {
 
 int diameter(const Options& o) {
   const t2::Scene scene = read_scene_argument(o.file);
-  std::vector<t2::Point> P;
-  for (const auto& p : scene.points) P.push_back(p.point);
+  const std::vector<t2::Point> P = scene_points(scene);
   std::optional<std::pair<std::size_t, std::size_t>> d;
   try {
     d = t2::diameter(P);
@@ -55,7 +55,7 @@ int diameter(const Options& o) {
   const std::optional<t2::Width> w = !P.empty() && one_side(P) ? t2::width(P) : std::nullopt;
   std::string out = fmt::format("{} {}\nsquared-distance {}\n", a, b, same ? "[1, 0]" : squared(P[a], P[b]));
   if (w) out += fmt::format("width {} {} {}\n", w->from, w->to, w->vertex);
-  if (!o.svg.empty()) {
+  if (!o.drawing.svg.empty()) {
     dr::Figure f;
     const dr::Style red = dr::Style().color("#d62728").width(2.5).layer(1);
     if (w) {  // the narrowest strip: the edge's line and its parallel (same point on Ω) through the vertex
@@ -67,7 +67,7 @@ int diameter(const Options& o) {
     if (!same && !(P[a] == t2::antipode(P[b]))) f.segment(P[a], P[b], red);
     for (const auto& p : P) f.add(p, dr::Style().color("#7f7f7f").layer(2));
     for (std::size_t i : {a, b}) f.add(P[i], dr::Style().color("#d62728").label(fmt::format("p{}", i)).layer(3));
-    t2::write_file_atomically(o.svg, render_models(f, P, o.model));
+    t2::write_file_atomically(o.drawing.svg, render_models(f, P, o.drawing.model));
   }
   fmt::print("{}", out);
   return kOk;
@@ -86,10 +86,7 @@ Action setup(CLI::App& app) {
       "the narrowest strip holding the points has one side along the hull edge i -> j and the\n"
       "other through point k. No point: nothing.");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
-  app.add_option("--svg", o->svg, "also draw the points, the pair and the strip to OUT (SVG)")->type_name("OUT");
-  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
-      ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  add_drawing_options(app, o->drawing, "the points, the pair and the strip");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 two\n"
       "different points lie on Omega: their distance is an angle, not a value of T1, so\n"

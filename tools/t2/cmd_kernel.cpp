@@ -19,7 +19,8 @@ namespace {
 namespace dr = t2::draw;
 
 struct Options {
-  std::string file, svg, model = "both";
+  std::string file;
+  AnswerDrawing drawing;
 };
 
 int polygon_kernel(const Options& o) {
@@ -45,14 +46,14 @@ int polygon_kernel(const Options& o) {
                                                 : "unbounded";
   std::string out = fmt::format("{}\n", kind);
   for (const auto& c : corners) out += fmt::format("{} {} {}\n", t2::to_string(c.w()), t2::to_string(c.x()), t2::to_string(c.y()));
-  if (!o.svg.empty()) {
+  if (!o.drawing.svg.empty()) {
     dr::Figure f;
     f.add(V, dr::Style().color("#000000").width(1.5).layer(1));
     const dr::Style green = dr::Style().color("#2ca02c").width(2).layer(0);
     if (corners.size() >= 3) f.add(corners, dr::Style(green).fill("#2ca02c"));
     if (corners.size() == 2) f.segment(corners[0], corners[1], green);
     if (corners.size() == 1) f.add(corners[0], dr::Style(green).label("kernel"));
-    t2::write_file_atomically(o.svg, render_models(f, V, o.model));
+    t2::write_file_atomically(o.drawing.svg, render_models(f, V, o.drawing.model));
   }
   fmt::print("{}", out);
   return kOk;
@@ -70,10 +71,7 @@ Action setup(CLI::App& app) {
       "are points of Omega: there the kernel runs off to infinity, and consecutive corners on\n"
       "Omega are joined along Omega.");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
-  app.add_option("--svg", o->svg, "also draw the polygon and its kernel to OUT (SVG, atomically)")->type_name("OUT");
-  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
-      ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  add_drawing_options(app, o->drawing, "the polygon and its kernel");
   app.footer(
       "Exit status: 0 done (an empty kernel too); 2 bad usage or bad input (file:line: what\n"
       "is wrong), e.g. no polygon block or more than one, or a vertex on the back side.");

@@ -18,20 +18,20 @@ namespace {
 namespace dr = t2::draw;
 
 struct Options {
-  std::string file, method = "jarvis", svg, model = "both";
+  std::string file, method = "jarvis";
+  AnswerDrawing drawing;
 };
 
 int layers(const Options& o) {
   const t2::Scene scene = read_scene_argument(o.file);
-  std::vector<t2::Point> P;
-  for (const auto& p : scene.points) P.push_back(p.point);
+  const std::vector<t2::Point> P = scene_points(scene);
   std::vector<std::vector<std::size_t>> L;
   try {
     L = t2::convex_layers(P, o.method == "graham" ? t2::LayersMethod::graham : t2::LayersMethod::jarvis);
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex layers: {}", scene.name, e.what()));
   }
-  if (!o.svg.empty()) {
+  if (!o.drawing.svg.empty()) {
     static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
     dr::Figure f;
     for (std::size_t j = 0; j < L.size(); ++j) {
@@ -42,7 +42,7 @@ int layers(const Options& o) {
       if (h.size() == 2) f.segment(h[0], h[1], s);
     }
     for (const auto& p : P) f.add(p, dr::Style().color("#000000").layer(1));
-    t2::write_file_atomically(o.svg, render_models(f, P, o.model));
+    t2::write_file_atomically(o.drawing.svg, render_models(f, P, o.drawing.model));
   }
   std::string out;
   for (const auto& layer : L) {
@@ -67,10 +67,7 @@ Action setup(CLI::App& app) {
                  "scans, O(n^2 log n)): the two ways of seed 003, with the same answer")
       ->type_name("M")
       ->check(CLI::IsMember({"jarvis", "graham"}));
-  app.add_option("--svg", o->svg, "also draw the points and the layers to OUT (SVG, atomically)")->type_name("OUT");
-  app.add_option("--model", o->model, "the models drawn: plane, sphere or both (default both)")
-      ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  add_drawing_options(app, o->drawing, "the points and the layers");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"
       "points lie in no open hemisphere, so not even the outer layer exists (the message\n"
