@@ -26,6 +26,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "raw_kernel.hpp"
 
 namespace {
 
@@ -63,13 +64,6 @@ std::vector<t2::Point> make_input(int which, std::size_t n) {
   return pts;
 }
 
-std::vector<Epick::Point_2> to_cgal(const std::vector<t2::Point>& pts) {
-  std::vector<Epick::Point_2> out;
-  out.reserve(pts.size());
-  for (const auto& p : pts) out.emplace_back(p.x(), p.y());
-  return out;
-}
-
 // CPU time of the process (single-threaded code): less disturbed by other load than wall time.
 double cpu_now() {
   timespec ts{};
@@ -81,7 +75,7 @@ double cpu_now() {
 void Compare(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
   const auto pts = make_input(which, bench_n());
-  const auto cpts = to_cgal(pts);
+  const auto cpts = t2bench::to_cgal(pts);
   double t2_time = 0, cgal_time = 0, bytes = 0, exact = 0;
   std::size_t triangles = 0, cgal_faces = 0;
   for (auto _ : state) {
@@ -120,7 +114,7 @@ void Rss(benchmark::State& state, bool t2_side) {
       const t2::Triangulation tr = t2::delaunay(pts);  // the input stays alive, as a caller's would
       benchmark::DoNotOptimize(tr.size());
     } else {
-      const auto cpts = to_cgal(pts);
+      const auto cpts = t2bench::to_cgal(pts);
       pts = {};
       pts.shrink_to_fit();
       CgalDelaunay dt;
@@ -136,19 +130,6 @@ void Rss(benchmark::State& state, bool t2_side) {
 BENCHMARK_CAPTURE(Rss, t2, true)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(Rss, cgal, false)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::kSecond);
 
-// The same algorithm on raw double predicates (no filter, not exact: uniform input only), to
-// measure what exactness costs.
-struct RawKernel : t2::DelaunayKernel {
-  static t2::Sign sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
-  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
-    return sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
-  }
-  static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
-    return sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
-                                        d.y()));
-  }
-};
-
 void Raw(benchmark::State& state) {
   const auto pts = make_input(0, bench_n());
   double exact_time = 0, raw_time = 0;
@@ -157,7 +138,7 @@ void Raw(benchmark::State& state) {
     benchmark::DoNotOptimize(t2::delaunay(pts).size());
     exact_time += (cpu_now() - t0);
     t0 = cpu_now();
-    benchmark::DoNotOptimize(t2::delaunay_with<RawKernel>(pts).size());
+    benchmark::DoNotOptimize(t2::delaunay_with<t2bench::RawDelaunayKernel>(pts).size());
     raw_time += (cpu_now() - t0);
   }
   state.counters["exact_s"] = exact_time / double(state.iterations());

@@ -45,6 +45,7 @@ extern "C" {
 #include "t2/hull/layers.hpp"
 #include "t2/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "raw_kernel.hpp"
 
 namespace {
 
@@ -84,13 +85,6 @@ std::vector<t2::Point> make_input(const std::string& input, std::size_t n, std::
   return pts;
 }
 
-std::vector<Epick::Point_2> to_cgal(const std::vector<t2::Point>& pts) {
-  std::vector<Epick::Point_2> out;
-  out.reserve(pts.size());
-  for (const auto& p : pts) out.emplace_back(p.x(), p.y());
-  return out;
-}
-
 // The hull by qhull (libqhull_r, default options): its number of vertices.
 std::size_t qhull_hull(std::vector<double>& xy) {
   qhT qh_storage;
@@ -107,12 +101,8 @@ std::size_t qhull_hull(std::vector<double>& xy) {
   return h;
 }
 
-// Orientation on plain doubles (naive, inexact) and on dyadic GMP numbers every time (exact, no
-// filter): the two ends of the cost of exactness, for the hull and the Delaunay kernels.
-t2::Sign raw_sign(double v) { return v > 0 ? t2::POSITIVE : v < 0 ? t2::NEGATIVE : t2::ZERO; }
-t2::Sign raw_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
-  return raw_sign(t2::det3(p.w(), p.x(), p.y(), q.w(), q.x(), q.y(), r.w(), r.x(), r.y()));
-}
+// Orientation on dyadic GMP numbers every time (exact, no filter): with raw_orient
+// (raw_kernel.hpp) the two ends of the cost of exactness, for the hull and the Delaunay kernels.
 t2::Sign exact_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
   using D = t2::Dyadic;
   return t2::sign_of(
@@ -120,19 +110,10 @@ t2::Sign exact_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r
 }
 
 struct RawHullKernel : t2::ExactKernel {
-  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return raw_orient(p, q, r); }
+  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return t2bench::raw_orient(p, q, r); }
 };
 struct ExactOnlyHullKernel : t2::ExactKernel {
   static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return exact_orient(p, q, r); }
-};
-
-// The Delaunay code on plain double predicates: not exact (bench_delaunay.cpp's Raw kernel).
-struct RawKernel : t2::DelaunayKernel {
-  static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return raw_orient(p, q, r); }
-  static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
-    return raw_sign(t2::detail::lifted_det4(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(),
-                                        d.y()));
-  }
 };
 
 // The same determinants evaluated exactly (dyadic GMP numbers) on every call: exactness without
@@ -171,7 +152,7 @@ Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
   if (impl == "raw") return [&P] { return t2::convex_hull<RawHullKernel>(P).size(); };
   if (impl == "exact") return [&P] { return t2::convex_hull<ExactOnlyHullKernel>(P).size(); };
   if (impl == "cgal") {
-    auto C = std::make_shared<std::vector<Epick::Point_2>>(to_cgal(P));
+    auto C = std::make_shared<std::vector<Epick::Point_2>>(t2bench::to_cgal(P));
     return [C] {
       std::vector<Epick::Point_2> out;
       CGAL::ch_akl_toussaint(C->begin(), C->end(), std::back_inserter(out));
@@ -195,10 +176,10 @@ Run layers_run(const std::string& impl, const std::vector<t2::Point>& P) {
 
 Run delaunay_run(const std::string& impl, const std::vector<t2::Point>& P) {
   if (impl == "t2") return [&P] { return t2::delaunay(P).finite_triangles().size(); };
-  if (impl == "raw") return [&P] { return t2::delaunay_with<RawKernel>(P).finite_triangles().size(); };
+  if (impl == "raw") return [&P] { return t2::delaunay_with<t2bench::RawDelaunayKernel>(P).finite_triangles().size(); };
   if (impl == "exact") return [&P] { return t2::delaunay_with<ExactOnlyKernel>(P).finite_triangles().size(); };
   if (impl == "cgal") {
-    auto C = std::make_shared<std::vector<Epick::Point_2>>(to_cgal(P));
+    auto C = std::make_shared<std::vector<Epick::Point_2>>(t2bench::to_cgal(P));
     return [C] {
       CGAL::Delaunay_triangulation_2<Epick> dt;
       dt.insert(C->begin(), C->end());
