@@ -25,6 +25,7 @@
 
 #include <t2/error.hpp>
 #include <t2/number.hpp>
+#include <t2/orient3d.hpp>
 #include <t2/point.hpp>
 
 namespace t2judge {
@@ -111,6 +112,23 @@ struct Codec<t2::BasicPoint<T>> {
   static t2::BasicPoint<T> take(std::istream& in) {  ///< reads w, x, y (throws Undefined for [0,0,0])
     T w = Codec<T>::take(in), x = Codec<T>::take(in), y = Codec<T>::take(in);
     return t2::BasicPoint<T>(std::move(w), std::move(x), std::move(y));
+  }
+};
+
+/// Points of R³ (chapter 08): x, y, z.
+template <>
+struct Codec<t2::Point3> {
+  static void put(std::string& o, const t2::Point3& p) {  ///< appends x, y, z
+    Codec<double>::put(o, p.x);
+    Codec<double>::put(o, p.y);
+    Codec<double>::put(o, p.z);
+  }
+  static t2::Point3 take(std::istream& in) {  ///< reads x, y, z
+    t2::Point3 p;
+    p.x = Codec<double>::take(in);
+    p.y = Codec<double>::take(in);
+    p.z = Codec<double>::take(in);
+    return p;
   }
 };
 
