@@ -3,7 +3,8 @@
 // First the certificate of a convex surface, decided exactly: every directed edge of a triangle
 // once and its reverse once (a closed oriented surface), no triangle with collinear corners,
 // every vertex of H and the new point on the inner side of every triangle or on its plane.
-// Then the rule of horizon.hpp, which makes the answer unique, compared as a set of triangles.
+// Then the answer the rule of horizon.hpp makes unique, which the test knows, compared as a set
+// of triangles.
 #include <algorithm>
 #include <array>
 #include <map>
@@ -34,9 +35,10 @@ inline std::string name(const Tri& t) {
   return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
 }
 
-/// "" when `out` is the surface of horizon.hpp after inserting P[p] into H, else what is wrong.
+/// "" when `out` is the surface after inserting P[p] into H — the triangles `want`, which the
+/// test knows — and a convex surface, else what is wrong.
 inline std::string check(const std::vector<t2::Point3>& P, const std::vector<long>& H, long p,
-                         const std::vector<long>& out) {
+                         const std::vector<long>& out, const std::vector<long>& want) {
   if (out.size() % 3 != 0) return "the answer's length is not a multiple of 3";
   const long n = long(P.size());
   for (long v : out)
@@ -58,20 +60,6 @@ inline std::string check(const std::vector<t2::Point3>& P, const std::vector<lon
     for (long v : q)
       if (t2::orient3d(P[t[0]], P[t[1]], P[t[2]], P[v]) == t2::POSITIVE)
         return "point " + std::to_string(v) + " is outside the triangle " + name(t) + ": not convex";
-  // The rule: keep what p does not see strictly, add (a, b, p) on every horizon edge.
-  std::vector<long> want;
-  std::map<std::pair<long, long>, bool> seen_edge;
-  std::vector<bool> seen;
-  for (std::size_t k = 0; k < H.size(); k += 3) {
-    seen.push_back(t2::orient3d(P[H[k]], P[H[k + 1]], P[H[k + 2]], P[p]) == t2::POSITIVE);
-    for (int i = 0; i < 3; ++i) seen_edge[{H[k + i], H[k + (i + 1) % 3]}] = seen.back();
-  }
-  for (std::size_t k = 0; k < H.size(); k += 3) {
-    if (!seen[k / 3]) want.insert(want.end(), {H[k], H[k + 1], H[k + 2]});
-    else
-      for (int i = 0; i < 3; ++i)
-        if (!seen_edge.at({H[k + (i + 1) % 3], H[k + i]})) want.insert(want.end(), {H[k + i], H[k + (i + 1) % 3], p});
-  }
   const std::vector<Tri> w = canonical(want);
   for (const Tri& t : w)
     if (!std::binary_search(got.begin(), got.end(), t)) return "the triangle " + name(t) + " is missing";

@@ -1,5 +1,5 @@
 // Exercise 08, hidden tests. Oracle: certificate.hpp (the exact certificate of a closed convex
-// surface containing the old vertices and the new point, and the unique answer of the rule).
+// surface containing the old vertices and the new point) and the unique answer of the rule.
 // Hulls by brute force (a triple is a face when every other point is strictly inside its plane:
 // random points have no four coplanar) or written out (the cube); inputs:
 // random points in and around a ball, a cube's coplanar triangles with points on its face
@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "certificate.hpp"
@@ -36,10 +37,29 @@ std::vector<long> brute_hull(const std::vector<Point3>& P, std::size_t n) {
   return H;
 }
 
+// The answer by the rule of horizon.hpp: what p does not see strictly stays, and each horizon
+// edge a -> b gets (a, b, p).
+std::vector<long> rule(const std::vector<Point3>& P, const std::vector<long>& H, long p) {
+  std::vector<long> want;
+  std::map<std::pair<long, long>, bool> seen_edge;
+  std::vector<bool> seen;
+  for (std::size_t k = 0; k < H.size(); k += 3) {
+    seen.push_back(t2::orient3d(P[H[k]], P[H[k + 1]], P[H[k + 2]], P[p]) == t2::POSITIVE);
+    for (int i = 0; i < 3; ++i) seen_edge[{H[k + i], H[k + (i + 1) % 3]}] = seen.back();
+  }
+  for (std::size_t k = 0; k < H.size(); k += 3) {
+    if (!seen[k / 3]) want.insert(want.end(), {H[k], H[k + 1], H[k + 2]});
+    else
+      for (int i = 0; i < 3; ++i)
+        if (!seen_edge.at({H[k + (i + 1) % 3], H[k + i]})) want.insert(want.end(), {H[k + i], H[k + (i + 1) % 3], p});
+  }
+  return want;
+}
+
 // Inserts each of the points P[first..] into the hull of P[0..first) and checks the answer.
 void insert_each(const std::vector<Point3>& P, const std::vector<long>& H, std::size_t first) {
   for (std::size_t p = first; p < P.size(); ++p)
-    EXPECT_EQ(ex08test::check(P, H, long(p), ex08::insert_point(P, H, long(p))), "") << "point " << p;
+    EXPECT_EQ(ex08test::check(P, H, long(p), ex08::insert_point(P, H, long(p)), rule(P, H, long(p))), "") << "point " << p;
 }
 
 TEST(Hidden, RandomHulls) {
@@ -96,7 +116,7 @@ TEST(Hidden, NearlyCoplanar) {
       Q.push_back(q);
     }
   for (std::size_t p = P.size(); p < Q.size(); ++p)
-    EXPECT_EQ(ex08test::check(Q, H, long(p), ex08::insert_point(Q, H, long(p))), "") << "point " << p;
+    EXPECT_EQ(ex08test::check(Q, H, long(p), ex08::insert_point(Q, H, long(p)), rule(Q, H, long(p))), "") << "point " << p;
 }
 
 }  // namespace
