@@ -1,0 +1,86 @@
+#pragma once
+// Exercise 10b: the exact certificate both test files check an answer with (part of the tests,
+// not of your solution). An answer is right when its triangles are counter-clockwise, use every
+// directed edge once, their boundary is one convex polygon holding every vertex, their areas
+// (exact rationals) sum to the area that polygon encloses, V - E + F = 1, every point of P is
+// equal to exactly one vertex, and every interior edge is locally Delaunay under the exact
+// t2::in_circle — which, for a triangulation of the points, makes it a Delaunay triangulation.
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <t2/incircle.hpp>
+#include <t2/number.hpp>
+#include <t2/orient.hpp>
+#include <t2/point.hpp>
+
+namespace ex10btest {
+
+/// The Cartesian coordinates of a front point, exactly.
+inline std::pair<t2::Rational, t2::Rational> xy(const t2::Point& p) {
+  return {t2::to_rational(p.x()) / t2::to_rational(p.w()), t2::to_rational(p.y()) / t2::to_rational(p.w())};
+}
+
+inline std::string edge(long a, long b) { return std::to_string(a) + " -> " + std::to_string(b); }
+
+/// "" when T is a Delaunay triangulation of P (see the file comment), else what is wrong.
+inline std::string check(const std::vector<t2::Point>& P, const std::vector<long>& T) {
+  if (T.empty() || T.size() % 3 != 0) return "the answer is empty or its length not a multiple of 3";
+  std::map<std::pair<long, long>, long> owner;
+  std::set<long> V;
+  t2::Rational area = 0, hull = 0;
+  for (std::size_t k = 0; k < T.size(); k += 3) {
+    for (int i = 0; i < 3; ++i) {
+      if (T[k + i] < 0 || T[k + i] >= long(P.size())) return "a vertex index out of range";
+      V.insert(T[k + i]);
+      if (!owner.emplace(std::pair{T[k + i], T[k + (i + 1) % 3]}, long(k)).second)
+        return "the directed edge " + edge(T[k + i], T[k + (i + 1) % 3]) + " is in two triangles";
+    }
+    if (t2::orient(P[T[k]], P[T[k + 1]], P[T[k + 2]]) != t2::POSITIVE)
+      return "triangle " + std::to_string(T[k]) + " " + std::to_string(T[k + 1]) + " " + std::to_string(T[k + 2]) +
+             " is not counter-clockwise";
+    const auto [ax, ay] = xy(P[T[k]]);
+    const auto [bx, by] = xy(P[T[k + 1]]);
+    const auto [cx, cy] = xy(P[T[k + 2]]);
+    area += (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  }
+  std::size_t edges = 0;
+  for (const auto& [e, k] : owner) {
+    const auto other = owner.find({e.second, e.first});
+    if (other == owner.end()) {  // a boundary edge: every vertex on its inner side or line
+      ++edges;
+      for (long v : V)
+        if (t2::orient(P[e.first], P[e.second], P[v]) == t2::NEGATIVE)
+          return "point " + std::to_string(v) + " is outside the boundary edge " + edge(e.first, e.second) +
+                 ": the triangles do not fill the convex hull";
+      const auto [ax, ay] = xy(P[e.first]);
+      const auto [bx, by] = xy(P[e.second]);
+      hull += ax * by - ay * bx;
+      continue;
+    }
+    if (e.first > e.second) continue;
+    ++edges;
+    long c = -1, d = -1;
+    for (int i = 0; i < 3; ++i) {
+      if (T[k + i] != e.first && T[k + i] != e.second) c = T[k + i];
+      if (T[other->second + i] != e.first && T[other->second + i] != e.second) d = T[other->second + i];
+    }
+    if (t2::in_circle(P[e.first], P[e.second], P[c], P[d]) == t2::POSITIVE)
+      return "the edge " + edge(e.first, e.second) + " is not locally Delaunay: point " + std::to_string(d) +
+             " is inside the circle of " + std::to_string(e.first) + " " + std::to_string(e.second) + " " +
+             std::to_string(c);
+  }
+  if (area != hull) return "the triangles do not cover the region their boundary encloses exactly once";
+  if (long(V.size()) - long(edges) + long(T.size() / 3) != 1) return "V - E + F != 1: not one disc";
+  for (long p = 0; p < long(P.size()); ++p) {
+    int equal = 0;
+    for (long v : V) equal += P[v] == P[p];
+    if (equal != 1)
+      return "point " + std::to_string(p) + (equal ? " is equal to two vertices" : " is not a vertex (nor equal to one)");
+  }
+  return "";
+}
+
+}  // namespace ex10btest
