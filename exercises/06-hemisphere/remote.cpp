@@ -1,0 +1,22 @@
+// Exercise 06 over the judge's wire (../harness/judge_wire.hpp), part of the grader, not of
+// your solution. Compiled with T2_JUDGE_CHECKER it stands in for your functions inside the
+// tests (each call goes to the sandboxed driver that runs your code); compiled without, it is the
+// driver's table of your functions.
+#include "hemisphere.hpp"
+
+#include "judge_wire.hpp"
+
+#ifdef T2_JUDGE_CHECKER
+namespace ex06 {
+t2::ExactPoint hemisphere(const std::vector<t2::Point>& P) { return t2judge::call<t2::ExactPoint>("hemisphere", P); }
+std::vector<long> witness(const std::vector<t2::Point>& P) { return t2judge::call<std::vector<long>>("witness", P); }
+}  // namespace ex06
+#else
+const std::map<std::string, t2judge::Handler>& t2judge::table() {
+  static const std::map<std::string, Handler> t = {
+      {"hemisphere", handler(&ex06::hemisphere)},
+      {"witness", handler(&ex06::witness)},
+  };
+  return t;
+}
+#endif
