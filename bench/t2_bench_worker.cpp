@@ -14,8 +14,9 @@
 //
 // PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull|raw|exact;
 //               layers jarvis|graham (the two ways of seed 003; size: the number of layers);
-//               delaunay t2|cgal|raw|exact (raw: t2's code on plain double predicates,
-//               inexact; exact: exact arithmetic on every call, no floating-point filter).
+//               delaunay t2|divide|cgal|raw|exact (divide: Guibas-Stolfi divide and conquer;
+//               raw: t2's code on plain double predicates, inexact; exact: exact arithmetic on
+//               every call, no floating-point filter).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
 // cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
 // Cartesian doubles) so that every implementation sees the same doubles.
@@ -45,6 +46,7 @@ extern "C" {
 #include "t2/hull/layers.hpp"
 #include "t2/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/divide.hpp"
 #include "raw_kernel.hpp"
 
 namespace {
@@ -176,6 +178,7 @@ Run layers_run(const std::string& impl, const std::vector<t2::Point>& P) {
 
 Run delaunay_run(const std::string& impl, const std::vector<t2::Point>& P) {
   if (impl == "t2") return [&P] { return t2::delaunay(P).finite_triangles().size(); };
+  if (impl == "divide") return [&P] { return t2::delaunay_divide(P).finite_triangles().size(); };
   if (impl == "raw") return [&P] { return t2::delaunay_with<t2bench::RawDelaunayKernel>(P).finite_triangles().size(); };
   if (impl == "exact") return [&P] { return t2::delaunay_with<ExactOnlyKernel>(P).finite_triangles().size(); };
   if (impl == "cgal") {

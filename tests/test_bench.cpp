@@ -169,9 +169,11 @@ TEST_F(CliBench, RangeFitsAGrowthExponent) {
 TEST_F(CliBench, PeersAgreeOnEveryInput) {
   const std::size_t n = 1000 * static_cast<std::size_t>(t2::testing::scale());
   const std::pair<const char*, const char*> runs[] = {
-      {"hull --vs cgal,qhull", "uniform"},   {"hull --vs cgal,qhull", "disk"},  {"hull --vs cgal,qhull", "circle"},
-      {"hull --vs cgal,qhull", "kuzmin"},    {"delaunay --vs cgal", "uniform"}, {"delaunay --vs cgal", "normal"},
-      {"delaunay --vs cgal", "grid"},        {"delaunay --vs cgal", "circle"},  {"delaunay --vs cgal", "clustered"}};
+      {"hull --vs cgal,qhull", "uniform"},       {"hull --vs cgal,qhull", "disk"},
+      {"hull --vs cgal,qhull", "circle"},        {"hull --vs cgal,qhull", "kuzmin"},
+      {"delaunay --vs divide,cgal", "uniform"},  {"delaunay --vs divide,cgal", "normal"},
+      {"delaunay --vs divide,cgal", "grid"},     {"delaunay --vs divide,cgal", "circle"},
+      {"delaunay --vs divide,cgal", "clustered"}};
   for (const auto& [what, input] : runs) {
     const auto r = t2(std::string("bench ") + what + " --n " + std::to_string(n) + " --input " + input);
     EXPECT_EQ(r.status, 0) << what << " " << input << "\n" << r.err << r.out;

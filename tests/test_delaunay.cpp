@@ -4,13 +4,10 @@
 // order of the input.
 #include <gtest/gtest.h>
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include <numeric>
 #include <random>
 
+#include "cgal_delaunay.hpp"
 #include "delaunay_certificates.hpp"
 #include "delaunay_inputs.hpp"
 
@@ -22,39 +19,10 @@ using testing::scale;
 using testing::Tri;
 using testing::triangle_set;
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<Triangulation::Index, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-using CgalDelaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-
-/// CGAL's finite triangles as index triples, counter-clockwise, smallest first, sorted.
-std::vector<Tri> cgal_triangles(const std::vector<Point>& pts) {
-  std::vector<std::pair<K::Point_2, Triangulation::Index>> in;
-  for (Triangulation::Index k = 0; k < pts.size(); ++k) in.emplace_back(K::Point_2(pts[k].x(), pts[k].y()), k);
-  CgalDelaunay dt(in.begin(), in.end());
-  std::vector<Tri> out;
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    Tri t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    out.push_back(t);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 void expect_cgal_equal(const std::vector<Point>& pts) {
   const Triangulation tr = delaunay(pts);
   expect_delaunay(tr, pts.size() <= 5000);
-  // CGAL keeps one of equal points, t2 the one of smallest index: name CGAL's by t2's choice.
-  std::vector<Triangulation::Index> canonical(pts.size());
-  std::iota(canonical.begin(), canonical.end(), 0);
-  for (auto [dropped, kept] : tr.duplicates()) canonical[dropped] = kept;
-  std::vector<Tri> theirs;
-  for (const Tri& t : cgal_triangles(pts)) theirs.push_back(testing::renamed(t, canonical));
-  std::sort(theirs.begin(), theirs.end());
-  const auto ours = triangle_set(tr);
-  EXPECT_EQ(ours.size(), theirs.size());
-  EXPECT_TRUE(ours == theirs) << "the triangle sets of t2 and CGAL differ";
+  testing::expect_cgal_triangles(tr, pts);
 }
 
 TEST(Delaunay, UniformEqualsCgal) {

@@ -42,7 +42,7 @@ TEST_F(TrianglesCli, SquareByHand) {
   write("sq.t2", kSquare);
   // The Delaunay triangles: the centre p2 joined to the corners and to p3; p4 = p1 is merged.
   const std::string want = "0 2 5\n0 3 2\n1 2 3\n1 6 2\n2 6 5\n";
-  for (const char* a : {"", " --algorithm incremental", " --algorithm flip"}) {
+  for (const char* a : {"", " --algorithm incremental", " --algorithm divide", " --algorithm flip"}) {
     const Result r = t2(std::string("delaunay sq.t2") + a);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.out, want) << a;
@@ -64,6 +64,7 @@ TEST_F(TrianglesCli, EqualsTheLibrary) {
   const Result a = t2("delaunay pts.t2"), b = t2("delaunay pts.t2 --algorithm flip"), c = t2("triangulate pts.t2");
   EXPECT_EQ(parse(a.out), inc);
   EXPECT_EQ(parse(b.out), inc);
+  EXPECT_EQ(parse(t2("delaunay pts.t2 --algorithm divide").out), inc);
   EXPECT_EQ(parse(c.out), sorted(triangulate(P).finite_triangles()));
   EXPECT_NE(parse(c.out), inc);  // the sweep is not Delaunay
   // Every line counter-clockwise with its smallest index first.
@@ -99,11 +100,11 @@ TEST_F(TrianglesCli, BadAndUndefinedInput) {
   EXPECT_TRUE(has(r.err, "<stdin>:2")) << r.err;
   r = t2("triangulate nope.t2");
   EXPECT_EQ(r.status, 2);
-  r = t2("delaunay - --algorithm divide", "0 0\n");
+  r = t2("delaunay - --algorithm sweep", "0 0\n");
   EXPECT_EQ(r.status, 2);
-  // A back point: the sweep and Lawson take front points only; a point on Omega among proper
-  // points is not implemented by the incremental algorithm either.
-  for (const char* c : {"triangulate", "delaunay --algorithm flip"}) {
+  // A back point: the sweep, Lawson and divide and conquer take front points only; a point on
+  // Omega among proper points is not implemented by the incremental algorithm either.
+  for (const char* c : {"triangulate", "delaunay --algorithm flip", "delaunay --algorithm divide"}) {
     r = t2(std::string(c) + " - --svg out.svg", "0 0\n1 0\n-1 -2 -3\n");
     EXPECT_EQ(r.status, 3) << c;
     EXPECT_TRUE(has(r.err, "undefined in T2: <stdin>: ")) << r.err;

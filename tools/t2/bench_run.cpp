@@ -22,6 +22,7 @@ const std::vector<Impl>& impls() {
       {"layers", "layers", "jarvis", "t2::convex_layers by Jarvis's march on what is left (seed 003), O(n^2)", true},
       {"layers-graham", "layers", "graham", "t2::convex_layers by Graham's scan on what is left, O(n^2 log n)", true},
       {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
+      {"divide", "delaunay", "divide", "t2::delaunay_divide (Guibas-Stolfi divide and conquer, quad-edge)", true},
       {"cgal", "", "cgal", "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay)", true},
       {"qhull", "hull", "qhull", "qhull (libqhull_r, default options: merges nearly collinear facets)", false},
       {"raw", "", "raw", "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false},
@@ -40,7 +41,7 @@ std::vector<std::string> algorithm_names() { return {"hull", "graham", "jarvis",
 
 std::vector<std::string> default_peers(const std::string& algo) {
   if (algo == "hull") return {"cgal", "qhull"};
-  if (algo == "delaunay") return {"cgal"};
+  if (algo == "delaunay") return {"divide", "cgal"};
   if (algo == "graham") return {"jarvis"};
   if (algo == "layers") return {"layers-graham"};
   return {};

@@ -216,7 +216,7 @@ std::string catalogue() {
   for (const auto& i : impls()) s += fmt::format("  {:<10} {}\n", i.name, i.what);
   s += fmt::format("Inputs (--input, from t2 gen; normal = one cluster, clustered = 64): {}\n",
                    fmt::join(input_names(), ", "));
-  s += "Default peers: hull --vs cgal,qhull; delaunay --vs cgal; graham --vs jarvis; layers --vs layers-graham;\n"
+  s += "Default peers: hull --vs cgal,qhull; delaunay --vs divide,cgal; graham --vs jarvis; layers --vs layers-graham;\n"
        "--vs none for ALGO alone.\n";
   return s;
 }

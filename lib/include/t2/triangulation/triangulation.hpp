@@ -154,6 +154,14 @@ class Triangulation {
   /// not form a closed oriented surface). Used by the constructions that assemble a
   /// triangulation from pieces (delaunay_t2.hpp).
   void assemble(const std::vector<std::array<Index, 3>>& triangles);
+  /// Replaces the triangles by the flat arrays `vertices` (3 per triangle) and `twins` (the
+  /// half-edge across each slot, linked by the caller as in the file comment); sets dimension 2.
+  /// Used by the constructions built on another structure (divide.hpp, from the quad-edge).
+  void assign(std::vector<Index> vertices, std::vector<Index> twins) {
+    v_ = std::move(vertices);
+    n_ = std::move(twins);
+    dimension_ = 2;
+  }
   /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
   /// `from`); used when a duplicate of smaller index arrives.
   void rename_vertex(Index t, Index from, Index to);
