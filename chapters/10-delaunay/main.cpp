@@ -1,10 +1,12 @@
 // Chapter 10: the Delaunay triangulation. The seed's claim that maximising the minimum height
 // is the same as maximising the minimum angle, refuted (a counterexample and the rate on random
 // convex quadrilaterals); legal edges; Lawson's flips and how many; the randomized incremental
-// construction and its flips per point; the figures of the chapter in both models.
+// construction and its flips per point; divide and conquer gives the same triangles; the
+// figures of the chapter in both models.
 #include <t2/t2.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/triangulation/delaunay.hpp>
+#include <t2/triangulation/divide.hpp>
 #include <t2/triangulation/lawson.hpp>
 
 #include <algorithm>
@@ -181,6 +183,25 @@ void incremental() {
   std::cout << "\n";
 }
 
+void divide() {
+  std::cout << "== divide and conquer against the incremental construction\n";
+  //> divide-same
+  t2::gen::Options o;
+  o.seed = 12;
+  o.n = 100000;
+  for (const char* kind : {"uniform", "kuzmin", "grid", "circle"}) {
+    const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
+    auto a = t2::delaunay_divide(P).finite_triangles(), b = t2::delaunay(P).finite_triangles();
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    std::cout << kind << ": " << a.size() << " triangles, "
+              << (a == b ? "the same" : "DIFFERENT") << " for both algorithms\n";
+    require(a == b, "divide and conquer and the incremental algorithm agree");
+  }
+  //< divide-same
+  std::cout << "\n";
+}
+
 void figures(const std::filesystem::path& dir) {
   int written = 0, count = 0;
   auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
@@ -267,5 +288,6 @@ int main(int argc, char** argv) {
   heights();
   lawson();
   incremental();
+  divide();
   figures(dir);
 }
