@@ -239,6 +239,23 @@ TEST(InCircle, APointAtInfinityIsTheLimitOfFarPoints) {
   EXPECT_GT(checked, 1000);
 }
 
+TEST(InCircle, ADOnOmegaIsTheLimitOfFarDOnEitherSide) {
+  // The lune through x, y (front) and z (back): its rule for d on Omega is the limit of its rules
+  // for d on either side, as d = [±ε, dx, dy] runs off towards [0, dx, dy]; and a rotation of
+  // x, y, z does not change it.
+  const Point x = Point::cartesian(1, 0), y = Point::cartesian(0, 1), z(-1, -0.2, -0.1);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 200; ++k) {
+    const double dx = u(rng), dy = u(rng);
+    const Sign at_inf = in_circle(x, y, z, Point::at_infinity(dx, dy));
+    ASSERT_NE(at_inf, ZERO);
+    EXPECT_EQ(in_circle(x, y, z, Point(1e-9, dx, dy)), at_inf);   // front, far in (dx, dy)
+    EXPECT_EQ(in_circle(x, y, z, Point(-1e-9, dx, dy)), at_inf);  // back, drawn far in -(dx, dy)
+    EXPECT_EQ(in_circle(z, x, y, Point::at_infinity(dx, dy)), at_inf);
+  }
+}
+
 TEST(InCircle, RandomDoublesMatchOracle) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);

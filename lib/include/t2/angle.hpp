@@ -55,6 +55,28 @@ int angle_half(const BasicPoint<T>& d) {
   return d.x() > 0 ? 0 : 1;
 }
 
+/// sign(cross(P1 − P0, Q1 − Q0)) of the drawn (Cartesian) positions, for proper p0, p1 on one
+/// side and proper q0, q1 on one side: the turn from the direction of p0 → p1 to that of q0 → q1
+/// (the positive factors p0_w p1_w and q0_w q1_w are left out). Exact. The T² Delaunay merge
+/// along Ω (triangulation/delaunay_t2.hpp) orders hull edges by it.
+inline Sign cross_of_differences(const Point& p0, const Point& p1, const Point& q0, const Point& q1) {
+  return sign_of_poly(
+      [](const auto& a, const auto& b, const auto& c, const auto& d) {
+        return (b.x * a.w - a.x * b.w) * (d.y * c.w - c.y * d.w) - (b.y * a.w - a.y * b.w) * (d.x * c.w - c.x * d.w);
+      },
+      p0, p1, q0, q1);
+}
+
+/// sign((P1 − P0) · (Q1 − Q0)) of the drawn positions, under the conditions of
+/// `cross_of_differences`. Exact.
+inline Sign dot_of_differences(const Point& p0, const Point& p1, const Point& q0, const Point& q1) {
+  return sign_of_poly(
+      [](const auto& a, const auto& b, const auto& c, const auto& d) {
+        return (b.x * a.w - a.x * b.w) * (d.x * c.w - c.x * d.w) + (b.y * a.w - a.y * b.w) * (d.y * c.w - c.y * d.w);
+      },
+      p0, p1, q0, q1);
+}
+
 }  // namespace detail
 
 /// d1 ^− d2: the direction of the angle θ1 − θ2 (see the file comment). Both arguments must be

@@ -41,7 +41,7 @@
 ///
 /// **T² input.** When some point is not in front (w ≤ 0), `delaunay` builds the dual of the
 /// T² Voronoi diagram instead (delaunay_t2.hpp: the planar triangulations of each side, merged
-/// along Ω, with the empty-circle predicate of face_circle.hpp for faces on both sides). Front
+/// along Ω, with the lunes of `in_circle` (incircle.hpp) for faces on both sides). Front
 /// input never takes that path, so its result is the planar one above, unchanged.
 ///
 /// **Memory.** While building: a copy of the points in insertion order (24 bytes a point), the

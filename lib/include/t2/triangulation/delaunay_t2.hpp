@@ -25,10 +25,10 @@
 /// a₁ → a₂ (counter-clockwise around F) and the current back owner b, or (b₁, b₂, a) for the
 /// drawn hull edge b̄₁ → b̄₂ and the current front owner a. Walking u once around the circle
 /// merges the two sequences of hull edges by the angle of their normals (an exact merge of
-/// directions: `detail::cross_of_differences`), so the band closes up between the two hulls.
+/// directions: `detail::cross_of_differences`, angle.hpp), so the band closes up between the two hulls.
 /// The disk of each face — the points nearer to its Voronoi vertex than its vertices — is the
-/// predicate `in_face_circle` (face_circle.hpp): the Euclidean disk for one-sided faces, for a
-/// band face the lune between the line a₁ a₂ (front) and its parallel through b (back).
+/// inside of the kernel's `in_circle` (incircle.hpp): the Euclidean disk for one-sided faces, for
+/// a band face the lune between the line a₁ a₂ (front) and its parallel through b (back).
 ///
 /// **Properties, with proofs.**
 ///  1. *Empty disks.* Every face's disk holds no site strictly (and in general position only
@@ -71,12 +71,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "t2/angle.hpp"
 #include "t2/error.hpp"
 #include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/triangulation/delaunay.hpp"
-#include "t2/triangulation/face_circle.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::detail {
