@@ -33,9 +33,11 @@ struct Quad {
 };
 
 // The kinds of input of the issue.
-enum Kind { kUniform, kLine, kCircle, kGrid, kBig, kSmall };
+// kEquidistant is for the distance comparison only: p[0] and p[1] rounded onto one circle around
+// p[2], then p[1] moved by a few ulps, so that their distances to p[2] differ by a few ulps.
+enum Kind { kUniform, kLine, kCircle, kGrid, kBig, kSmall, kEquidistant };
 const char* const kKindNames[] = {"uniform [-1,1]^2", "rounded onto a line", "rounded onto a circle",
-                                  "small integer grid", "near 2^60", "near 2^-60"};
+                                  "small integer grid", "near 2^60", "near 2^-60", "nearly equidistant"};
 
 Quad make_quad(const double (&xy)[4][2]) {
   Quad q{{t2::Point(1, 0, 0), t2::Point(1, 0, 0), t2::Point(1, 0, 0), t2::Point(1, 0, 0)}, {}};
@@ -49,7 +51,7 @@ Quad make_quad(const double (&xy)[4][2]) {
 std::vector<Quad> make_input(Kind kind, std::size_t n) {
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> u(-1, 1), t(0, 1), ang(0, 6.283185307179586);
-  std::uniform_int_distribution<int> g(0, 15);
+  std::uniform_int_distribution<int> g(0, 15), ulps(-3, 3);
   std::vector<Quad> v;
   v.reserve(n);
   while (v.size() < n) {
@@ -68,6 +70,14 @@ std::vector<Quad> make_input(Kind kind, std::size_t n) {
         p[0] = cx + r * std::cos(a);
         p[1] = cy + r * std::sin(a);
       }
+    } else if (kind == kEquidistant) {  // p[0], p[1] at one distance from p[2], then a few ulps off
+      const double cx = u(rng), cy = u(rng), r = 0.1 + t(rng);
+      for (int i = 0; i < 4; ++i) {
+        const double a = ang(rng);
+        xy[i][0] = i == 2 ? cx : cx + r * std::cos(a);
+        xy[i][1] = i == 2 ? cy : cy + r * std::sin(a);
+      }
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) xy[1][0] = std::nextafter(xy[1][0], k > 0 ? 9.0 : -9.0);
     } else {
       const double scale = kind == kBig ? 0x1p60 : (kind == kSmall ? 0x1p-60 : 1.0);
       for (auto& p : xy) {
@@ -105,6 +115,14 @@ int naive_distance(const Quad& q) {
   const double d = (ax * ax + ay * ay) - (bx * bx + by * by);
   return (d > 0) - (d < 0);
 }
+
+// The same comparison by t2 and by CGAL (lambdas, so that the timing loop inlines them).
+constexpr auto t2_distance = [](const Quad& q) {
+  return static_cast<int>(t2::compare_distance(q.p[0], q.p[1], q.p[2]));
+};
+constexpr auto cgal_distance = [](const Quad& q) {
+  return static_cast<int>(CGAL::compare_distance_to_point(q.c[2], q.c[0], q.c[1]));
+};
 
 // The lexicographic (x, y) order of p[0] and p[1]: plain comparisons of doubles (exact).
 int naive_xy(const Quad& q) {
@@ -174,8 +192,12 @@ int main() {
               "t2/naive", "t2/CGAL", "naive wrong");
 #endif
   long checksum = 0;
-  for (int k = kUniform; k <= kSmall; ++k) {
+  for (int k = kUniform; k <= kEquidistant; ++k) {
     const auto in = make_input(static_cast<Kind>(k), kInput);
+    if (k == kEquidistant) {
+      run_row("distance", k, in, checksum, naive_distance, t2_distance, cgal_distance);
+      continue;
+    }
     run_row("orient", k, in, checksum, naive_orient,
             [](const Quad& q) { return static_cast<int>(t2::orient(q.p[0], q.p[1], q.p[2])); },
             [](const Quad& q) { return static_cast<int>(CGAL::orientation(q.c[0], q.c[1], q.c[2])); });
@@ -185,8 +207,7 @@ int main() {
               return static_cast<int>(CGAL::side_of_oriented_circle(q.c[0], q.c[1], q.c[2], q.c[3]));
             });
     run_row("distance", k, in, checksum, naive_distance,
-            [](const Quad& q) { return static_cast<int>(t2::compare_distance(q.p[0], q.p[1], q.p[2])); },
-            [](const Quad& q) { return static_cast<int>(CGAL::compare_distance_to_point(q.c[2], q.c[0], q.c[1])); });
+            t2_distance, cgal_distance);
     run_row("xy", k, in, checksum, naive_xy,
             [](const Quad& q) { return static_cast<int>(t2::compare_xy(q.p[0], q.p[1])); },
             [](const Quad& q) { return static_cast<int>(CGAL::compare_xy(q.c[0], q.c[1])); });

@@ -313,6 +313,51 @@ TEST(InCircle, NearlyCocircularMatchesOracleAtEveryScale) {
   }
 }
 
+TEST(InCircle, GridsMatchOracleAtEveryScale) {
+  // Cartesian points k·2^s on integer grids: the coarse-grid stage of incircle_double.hpp
+  // (|k| < 2^11 relative to the largest coordinate, 2^s in range) and its edges: |k| up to 4095
+  // and 65535 (past the grid, the expansions decide; a grid of 2^17 would round here), scales
+  // past 2^±200, and points of one circle (x² + y² = (5m)², from (3, 4, 5)) with d exactly on it
+  // or one grid step off, where H is zero or small against terms near 2^50 and beyond.
+  std::mt19937_64 rng(23);
+  const long pyth[12][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5},
+                            {3, -4}, {4, -3}};
+  std::uniform_int_distribution<int> pick(0, 11), nudge(-1, 1);
+  int zeros = 0;
+  for (int s : {0, -60, 60, -190, 190, -205, 205, -1000}) {
+    for (long range : {15L, 2047L, 4095L, 65535L}) {
+      std::uniform_int_distribution<long> u(-range, range), m(1, range / 5);
+      for (int i = 0; i < 300 * scale(); ++i) {
+        double xy[4][2];
+        if (i % 2 == 0) {
+          for (auto& p : xy) p[0] = double(u(rng)), p[1] = double(u(rng));
+        } else {  // one circle around (cx, cy), radius 5 m; d perhaps one step off it
+          const long r = m(rng), cx = u(rng) / 2, cy = u(rng) / 2;
+          for (auto& p : xy) {
+            const auto& v = pyth[pick(rng)];
+            p[0] = double(cx + r * v[0]), p[1] = double(cy + r * v[1]);
+          }
+          xy[3][0] += nudge(rng);
+        }
+        Point p[4] = {Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0)};
+        for (int k = 0; k < 4; ++k) p[k] = Point::cartesian(std::ldexp(xy[k][0], s), std::ldexp(xy[k][1], s));
+        if (orient_oracle(p[0], p[1], p[2]) == ZERO) {
+          ASSERT_THROW(in_circle(p[0], p[1], p[2], p[3]), Undefined);
+          continue;
+        }
+        const Sign want = in_circle_oracle(p[0], p[1], p[2], p[3]);
+        zeros += want == ZERO;
+        ASSERT_EQ(in_circle(p[0], p[1], p[2], p[3]), want) << s << " " << range << " " << i;
+        ASSERT_EQ(in_circle(p[1], p[0], p[2], p[3]), -want);
+        if (s == 0) {
+          ASSERT_EQ(in_circle(to_exact(p[0]), to_exact(p[1]), to_exact(p[2]), to_exact(p[3])), want);
+        }
+      }
+    }
+  }
+  EXPECT_GT(zeros, 100);
+}
+
 TEST(InCircle, NearlyCollinearTrianglesThrowExactlyWhenCollinear) {
   // a, b, c rounded onto a line: the fast path cannot certify their orientation, the exact
   // orient decides whether there is a circle.

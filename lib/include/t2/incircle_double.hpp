@@ -40,7 +40,17 @@
 /// is trusted when m_w, mₓ, m_y ∈ [2⁻¹⁰⁰, 2¹⁰⁰]: an underflow's 2⁻¹⁰⁷⁵ is then at most 2⁻²⁷⁵
 /// relative to the bound.
 ///
-/// **Exact stages.** Expansions (expansion.hpp); nonzero |coordinates| must lie in [2⁻²¹⁰,
+/// **Exact stages.** First, for Cartesian input on a coarse grid, the fast path's own
+/// evaluation: let 2^E be the smallest power of two above every |coordinate| (frexp), g =
+/// 2^(E−11), and suppose every coordinate is k·g with k an integer (|k| < 2¹¹) and E ∈ [−200,
+/// 200]. Then every quantity of the evaluation is an integer multiple of a power of g whose
+/// integer part is below 2⁵³, so no operation rounds: the differences are k·g with |k| < 2¹²,
+/// the squares, products and their sums and differences (α, m₁, …) are k·g² with |k| < 2²⁵, the
+/// terms α·m are k·g⁴ with |k| < 2⁵⁰ and H is a sum of three of them, |k| < 3·2⁵⁰ < 2⁵³; g⁴ ≥
+/// 2⁻⁸⁴⁴ is normal and 2⁵³g⁴ ≤ 2⁸⁶¹ is finite. So fl(H) = H, zero included. Small integer
+/// grids (every |x| < 2¹¹) are the common case; they fail the fast path only when H = 0, and this
+/// certifies the zero at the cost of one more evaluation.
+/// Then expansions (expansion.hpp); nonzero |coordinates| must lie in [2⁻²¹⁰,
 /// 2²⁵⁰] (degree 4) for Cartesian input, in [2⁻⁸⁰, 2¹²⁰] (degree 8) for homogeneous input;
 /// outside, dyadic GMP numbers decide. For Cartesian input an adaptive stage comes first (in the
 /// spirit of Shewchuk's stages B and C). Two-diff splits each difference into its rounded head
@@ -133,12 +143,35 @@ inline double incircle2_permanent(const double (&x)[6]) {
          (cdx * cdx + cdy * cdy) * (std::fabs(adx * bdy) + std::fabs(bdx * ady));
 }
 
+/// Do the coordinates lie on the coarse grid of the file comment, k·2^(E−11) with |k| < 2¹¹,
+/// 2^E the smallest power of two above all of them, E ∈ [−200, 200]? Then the fast path's
+/// evaluation of H is exact.
+inline bool on_coarse_grid(const double (&v)[8]) {
+  double hi = 0;
+  for (const double x : v) hi = std::max(hi, std::fabs(x));
+  int e = 0;
+  (void)std::frexp(hi, &e);  // hi < 2^e (e = 0 for hi = 0)
+  if (e < -200 || e > 200) return false;
+  const double s = std::ldexp(1.0, 11 - e);
+  for (const double x : v) {
+    const double k = x * s;  // exact (a power of two, no underflow), |k| < 2^11
+    if (static_cast<double>(static_cast<int>(k)) != k) return false;
+  }
+  return true;
+}
+
 /// The exact sign of the lifted determinant of four Cartesian points.
 [[gnu::noinline]] inline Sign incircle2_exact(double ax, double ay, double bx, double by, double cx, double cy,
                                               double dx, double dy) {
   using namespace expansion;
   count_exact();
   const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  if (on_coarse_grid(v)) {  // the fast path's evaluation is exact (file comment)
+    const double adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy, cdx = cx - dx, cdy = cy - dy;
+    const double m1 = bdx * cdy - cdx * bdy, m2 = cdx * ady - adx * cdy, m3 = adx * bdy - bdx * ady;
+    const double h = ((adx * adx + ady * ady) * m1 + (bdx * bdx + bdy * bdy) * m2) + (cdx * cdx + cdy * cdy) * m3;
+    return static_cast<Sign>((h > 0) - (h < 0));
+  }
   if (!std::all_of(v, v + 8, [](double x) { return in_expansion_range<-210, 250>(x); })) {
     const Dyadic one(1.0);
     return sign_of(lifted_det4_any(one, Dyadic(ax), Dyadic(ay), one, Dyadic(bx), Dyadic(by), one, Dyadic(cx),
