@@ -4,6 +4,9 @@
 #include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
+#include <numeric>
+#include <random>
+
 #include "hull_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "testing.hpp"
@@ -89,6 +92,37 @@ TEST(HullCgal, DuplicateHeavyAndGrid) {
   check_kind(Kind::duplicates, 2000, 3 * kScale);
   check_kind(Kind::grid, 2000, 3 * kScale);
   check_kind(Kind::grid, 30, 10 * kScale);  // 6×6 grids: most points collinear or repeated
+}
+// The bucket sort of plain points (chart_sort.hpp) against one std::sort in the chart's
+// order: ranges that overflow, tiny ranges, many equal x, repeats; then the hulls against CGAL.
+TEST(HullCgal, BucketSortOfPlainPoints) {
+  std::mt19937_64 rng(7);
+  const auto pick = [&](std::initializer_list<double> v) {
+    return *(v.begin() + static_cast<std::ptrdiff_t>(rng() % v.size()));
+  };
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (double range : {1.0, 1.5e308, 1e-300, 4.9e-324}) {
+    std::vector<Point> P;
+    for (int i = 0; i < 3000; ++i) {
+      const double x = i % 3 == 0 ? range * pick({-1, -0.5, 0, 0.25, 1}) : range * u(rng);
+      P.push_back(Point::cartesian(x, i % 5 == 0 ? pick({-2, 0, 3}) : u(rng)));
+    }
+    for (int i = 0; i < 300; ++i) P.push_back(P[rng() % P.size()]);  // repeats
+    const Chart chart = front_chart();
+    const ChartOrder<ExactKernel> order{chart};
+    std::vector<std::size_t> idx(P.size());
+    std::iota(idx.begin(), idx.end(), std::size_t{0});
+    std::vector<Point> want = P;
+    std::sort(want.begin(), want.end(), [&](const Point& a, const Point& b) { return order.less(a, b); });
+    want.erase(std::unique(want.begin(), want.end()), want.end());
+    const auto got = detail::sorted_in_chart<ExactKernel>(P, idx, order);
+    ASSERT_EQ(got.size(), want.size()) << "range " << range;
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      ASSERT_TRUE(got[k].p == want[k]) << "range " << range << " at " << k;
+      ASSERT_TRUE(P[got[k].i] == got[k].p);
+    }
+    expect_like_cgal(P, "bucket sort, range " + std::to_string(range));
+  }
 }
 TEST(HullCgal, TinyInputs) {
   const Point a = Point::cartesian(1, 2), b = Point::cartesian(3, -1);

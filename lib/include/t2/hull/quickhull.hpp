@@ -10,6 +10,7 @@
 /// chart, which is a hull vertex whatever the direction, so the answer is exact and only the
 /// balance of the division depends on the choice.
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -47,10 +48,13 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
   const ChartOrder<K> order{chart};
   std::size_t h = static_cast<std::size_t>(-1);
   if (chart.front) {  // farthest from the line a b: extreme in the direction of b − a turned right
-    const Point &A = P[a], &B = P[b];
-    const Point d(0, B.x() * A.w() - A.x() * B.w(), B.y() * A.w() - A.y() * B.w());  // rounded: any direction will do
-    if (d.x() != 0 || d.y() != 0)
-      h = extreme_of<K>(P, S, a, b, order, [&](const Point& p, const Point& q) { return -K::orient(p, q, d); });
+    const Point &A = P[a], &B = P[b];  // rounded: any direction will do, if finite
+    const double dx = B.x() * A.w() - A.x() * B.w(), dy = B.y() * A.w() - A.y() * B.w();
+    if (std::isfinite(dx) && std::isfinite(dy) && (dx != 0 || dy != 0)) {
+      const Point d(0, dx, dy);
+      h = extreme_of<K>(P, S, a, b, order,
+                        [&](const Point& p, const Point& q) { return -K::orient(p, q, d); });
+    }
   }
   for (int axis = 0; axis < 4 && h == static_cast<std::size_t>(-1); ++axis) {  // extreme in x, −x, y, −y
     h = extreme_of<K>(P, S, a, b, order, [&](const Point& p, const Point& q) {
