@@ -1,5 +1,6 @@
 // The input generators (t2/gen): reproducible bytes, and the property each kind claims, checked
 // exactly (GMP integers and rationals, the exact predicates).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -167,6 +168,66 @@ TEST(Gen, PolygonsHaveTheirShape) {
         EXPECT_FALSE(intersects(s, t)) << gen::name(k) << " edges " << i << " and " << j;
       }
   }
+}
+
+// The side of r from p → q, on exact rational positions (the classic plane test, independent
+// of the library's predicates).
+Sign turn(const testing::Pos& p, const testing::Pos& q, const testing::Pos& r) {
+  return testing::sign_oracle((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+}
+
+// r, collinear with p and q, lies on the closed segment pq.
+bool within(const testing::Pos& p, const testing::Pos& q, const testing::Pos& r) {
+  for (int k : {0, 1})
+    if (r[k] < std::min(p[k], q[k]) || r[k] > std::max(p[k], q[k])) return false;
+  return true;
+}
+
+// The closed segments ab and cd meet.
+bool meet_oracle(const testing::Pos& a, const testing::Pos& b, const testing::Pos& c, const testing::Pos& d) {
+  const Sign s1 = turn(a, b, c), s2 = turn(a, b, d), s3 = turn(c, d, a), s4 = turn(c, d, b);
+  if (s1 * s2 < 0 && s3 * s4 < 0) return true;
+  return (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) || (s3 == 0 && within(c, d, a)) ||
+         (s4 == 0 && within(c, d, b));
+}
+
+// Every polygon kind makes simple, counter-clockwise polygons, small n included (star-polygon
+// once closed non-simple polygons for n = 4, seed 9: the origin outside its vertices).
+TEST(Gen, EveryPolygonIsSimple) {
+  for (Kind k : {Kind::convex_polygon, Kind::star_polygon, Kind::monotone_polygon, Kind::simple_polygon})
+    for (std::size_t n : {3, 4, 5, 6, 7, 8, 10, 13, 20, 40})
+      for (std::uint64_t seed = 1; seed <= (n < 40 ? 30u : 5u); ++seed) {
+        const Polygon P = gen::polygon(k, opts(n, seed));
+        const std::size_t m = P.size();
+        const std::string what = fmt::format("{} --n {} --seed {}", gen::name(k), n, seed);
+        ASSERT_GE(m, 3u) << what;
+        if (k != Kind::simple_polygon) {
+          EXPECT_EQ(m, n) << what;  // simple-polygon drops repeats
+        }
+        std::vector<testing::Pos> V;
+        for (const Point& p : P) V.push_back(testing::pos(p));
+        Rational area2 = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+          area2 += V[i][0] * V[(i + 1) % m][1] - V[i][1] * V[(i + 1) % m][0];
+          for (std::size_t j = i + 1; j < m; ++j) ASSERT_FALSE(V[i] == V[j]) << what << ": repeated vertex";
+        }
+        EXPECT_GT(area2, 0) << what << ": not counter-clockwise";
+        for (std::size_t i = 0; i < m; ++i) {
+          for (std::size_t j = i + 1; j < m; ++j) {
+            const auto &a = V[i], &b = V[(i + 1) % m], &c = V[j], &d = V[(j + 1) % m];
+            if (j == i + 1 || (i == 0 && j == m - 1)) {  // neighbours u → v → w: only v in common
+              const auto &u = j == i + 1 ? a : c, &v = j == i + 1 ? b : a, &w = j == i + 1 ? d : b;
+              const bool flat = turn(u, v, w) == ZERO;
+              EXPECT_FALSE(flat && (within(u, v, w) || within(v, w, u)))
+                  << what << ": edges " << i << " and " << j << " overlap";
+              EXPECT_FALSE(m == 3 && flat) << what << ": a flat triangle";
+            } else {
+              EXPECT_FALSE(meet_oracle(a, b, c, d)) << what << ": edges " << i << " and " << j << " meet";
+            }
+          }
+          }
+        EXPECT_TRUE(is_simple(P)) << what;
+      }
 }
 
 TEST(Gen, SegmentsHaveExactlyTheCrossingsAsked) {

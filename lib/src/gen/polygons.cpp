@@ -51,16 +51,28 @@ Polygon convex(const Options& o) {
   return v;
 }
 
+// n points in the square, in angular order around the origin. The polygon through them is
+// simple when every turn from one vertex to the next, seen from the origin, is strictly between
+// 0 and π (Δ(o, v_i, v_{i+1}) > 0 for all i, the last to the first included): the turns add up to
+// one full turn, so the vertices go once around the origin, which lies strictly inside and sees
+// every edge. Otherwise (a gap of π or more, so the origin outside, as for small n; or two
+// vertices in one direction) the points are drawn again, from the same stream: a draw that
+// passes is the one the generator always made.
 Polygon star(const Options& o) {
   Random r(o.seed);
-  Polygon v;
-  while (v.size() < o.n) {
-    const double x = r.symmetric(), y = r.symmetric();
-    if (x == 0 && y == 0) continue;
-    v.push_back(Point::cartesian(x, y));
+  for (;;) {
+    Polygon v;
+    while (v.size() < o.n) {
+      const double x = r.symmetric(), y = r.symmetric();
+      if (x == 0 && y == 0) continue;
+      v.push_back(Point::cartesian(x, y));
+    }
+    std::sort(v.begin(), v.end(), by_angle);
+    bool simple = true;
+    for (std::size_t i = 0; i < v.size() && simple; ++i)
+      simple = orient(kOrigin, v[i], v[(i + 1) % v.size()]) == POSITIVE;
+    if (simple) return v;
   }
-  std::sort(v.begin(), v.end(), by_angle);
-  return v;
 }
 
 Polygon monotone(const Options& o) {
