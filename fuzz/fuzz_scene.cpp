@@ -1,6 +1,7 @@
-// libFuzzer target: t2::parse_scene on arbitrary bytes. A valid input must parse; an invalid
-// one must throw t2::ParseError whose message starts with "name:line: " (line >= 1). Any other
-// exception, a crash or a sanitizer report is a bug.
+// libFuzzer target: t2::parse_scene on arbitrary bytes. A valid input must parse, and its text
+// (t2::to_string) must parse again; an invalid one must throw t2::ParseError whose message
+// starts with "name:line: " (line >= 1). Any other exception, a crash or a sanitizer report is
+// a bug.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -22,6 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Every line and circle block builds its object without throwing.
     for (const auto& l : s.lines) (void)l.join();
     for (const auto& c : s.circles) (void)c.circle();
+    // Its text (styles included) reads back: a ParseError here names "written", not "fuzz",
+    // and fails the prefix check below.
+    (void)t2::parse_scene(t2::to_string(s), "written");
   } catch (const t2::ParseError& e) {
     const std::string prefix = "fuzz:" + std::to_string(e.line()) + ": ";
     if (e.line() < 1 || std::string_view(e.what()).substr(0, prefix.size()) != prefix) std::abort();

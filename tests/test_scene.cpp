@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include "scene_testing.hpp"
 #include "testing.hpp"
 
 namespace t2 {
@@ -29,26 +30,6 @@ bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == s
 void expect_coords(const Point& p, double w, double x, double y) {
   EXPECT_TRUE(same_bits(p.w(), w) && same_bits(p.x(), x) && same_bits(p.y(), y))
       << to_string(p) << " != [" << w << ", " << x << ", " << y << "]";
-}
-
-// The ParseError thrown by parsing `text`, checked to carry `name:line: ` in front.
-ParseError error_of(std::string_view text, const std::string& name = "f.t2") {
-  try {
-    (void)parse_scene(text, name);
-  } catch (const ParseError& e) {
-    EXPECT_EQ(e.file(), name);
-    EXPECT_EQ(std::string(e.what()), name + ":" + std::to_string(e.line()) + ": " + e.message());
-    return e;
-  }
-  ADD_FAILURE() << "no ParseError for: " << text;
-  return ParseError(name, 0, "none");
-}
-
-// Expects a ParseError on line `line` whose message contains `part`.
-void expect_error(std::string_view text, int line, const std::string& part) {
-  const ParseError e = error_of(text);
-  EXPECT_EQ(e.line(), line) << e.what();
-  EXPECT_NE(e.message().find(part), std::string::npos) << "message: " << e.what() << "\nwanted: " << part;
 }
 
 TEST(Scene, PlainPointsTwoAndThreeNumbers) {
@@ -425,6 +406,7 @@ void parses_or_fails_cleanly(const std::string& text, const std::string& name) {
     const Scene s = parse_scene(text, name);
     for (const auto& l : s.lines) EXPECT_NO_THROW((void)l.join()) << name;  // accepted means defined
     for (const auto& c : s.circles) EXPECT_NO_THROW((void)c.circle()) << name;
+    EXPECT_NO_THROW((void)parse_scene(to_string(s), "written")) << name;  // its text reads back
   } catch (const ParseError& e) {
     const std::string prefix = name + ":" + std::to_string(e.line()) + ": ";
     EXPECT_EQ(std::string(e.what()).substr(0, prefix.size()), prefix);
@@ -436,7 +418,8 @@ void parses_or_fails_cleanly(const std::string& text, const std::string& name) {
 TEST(Scene, RandomGarbageParsesOrFailsWithFileAndLine) {
   const std::string pieces[] = {"1", "-2.5", "0", " ", "\t", "\n", "\r\n", "#", "e", "e9", "999", ".",
                                 "+", "-", "nan", "inf", "label", "A", "B", "segment", "polygon", "line", "circle",
-                                "end", "\x00", "\xff", "'", "1e-400", "0 0 0", "-1 -1 -2"};
+                                "end", "\x00", "\xff", "'", "1e-400", "0 0 0", "-1 -1 -2", "style", "=", "color=", "red",
+                                "#d62728", "\"", "label=\"", "width=2", "fill=none"};
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<std::size_t> pick(0, std::size(pieces) - 1), len(0, 60);
   for (int i = 0; i < 3000 * scale(); ++i) {
@@ -485,7 +468,7 @@ TEST(Scene, BlockKindsComeFromOneTable) {
   // An unknown kind is refused with file:line, and the message lists every kind of the table.
   const ParseError u = error_of("1 2\n\nhexagon\n1 2\nend\n");
   EXPECT_EQ(u.line(), 3) << u.what();
-  EXPECT_EQ(u.message(), "unknown keyword 'hexagon' (the keywords are label, " + listed + "end)");
+  EXPECT_EQ(u.message(), "unknown keyword 'hexagon' (the keywords are label, style, " + listed + "end)");
   EXPECT_EQ(std::string(u.what()), "f.t2:3: " + u.message());
   const ParseError end = error_of("end\n");
   EXPECT_EQ(end.message(), "'end' without an open block (segment, polygon, line or circle)");

@@ -25,6 +25,9 @@
 ///       A
 ///       3 0
 ///     end
+///     style color=red width=2   # attributes of every object after this line
+///     3 4 color=blue label="P"  # an object's own attributes end its line (scene_style.hpp)
+///     polygon fill=none layer=1 # a block's go on its keyword line
 ///
 /// A file of plain points is a valid scene. Errors throw `ParseError`, whose message reads
 /// `file:line: what is wrong`.
@@ -39,6 +42,7 @@
 #include "t2/line.hpp"
 #include "t2/point.hpp"
 #include "t2/polygon.hpp"
+#include "t2/scene_style.hpp"
 #include "t2/segment.hpp"
 
 namespace t2 {
@@ -68,6 +72,7 @@ struct ScenePoint {
   Point point;        ///< the point of T²
   int line = 0;       ///< the 1-based line of the file that gave it
   std::string label;  ///< its name from a `label` line, or empty
+  SceneStyle style;   ///< its attributes (a point of a block has none: the block has them)
 };
 
 /// A `segment ... end` block: two endpoints that are not antipodes.
@@ -75,6 +80,7 @@ struct SceneSegment {
   ScenePoint a;   ///< the first endpoint
   ScenePoint b;   ///< the second endpoint
   int line = 0;   ///< the line of the `segment` keyword
+  SceneStyle style;  ///< its attributes
   /// The segment of T² from a to b (the parser has checked that it is defined).
   Segment segment() const { return Segment(a.point, b.point); }
 };
@@ -84,6 +90,7 @@ struct SceneSegment {
 struct ScenePolygon {
   std::vector<ScenePoint> vertices;  ///< the vertices, in the order of the file
   int line = 0;                      ///< the line of the `polygon` keyword
+  SceneStyle style;                  ///< its attributes
   /// The vertices as a `t2::Polygon`, for the algorithms of polygon.hpp.
   Polygon polygon() const {
     Polygon p;
@@ -99,6 +106,7 @@ struct SceneLine {
   ScenePoint a;  ///< the first point
   ScenePoint b;  ///< the second point
   int line = 0;  ///< the line of the `line` keyword
+  SceneStyle style;  ///< its attributes
   /// The line a ∨ b, oriented from a to b (the parser has checked that it is defined).
   Line join() const { return t2::join(a.point, b.point); }
 };
@@ -109,6 +117,7 @@ struct SceneCircle {
   ScenePoint center;   ///< the centre
   ScenePoint through;  ///< a point of the circle
   int line = 0;        ///< the line of the `circle` keyword
+  SceneStyle style;    ///< its attributes
   /// The circle (the parser has checked that it is defined).
   Circle circle() const { return Circle(center.point, through.point); }
 };
@@ -134,6 +143,12 @@ std::vector<std::string_view> scene_block_keywords();
 /// Parses the text of a scene file; `name` is used in error messages (`name:line: ...`).
 /// Throws `ParseError` on the first error.
 Scene parse_scene(std::string_view text, std::string name);
+
+/// The text of a scene file that parses back to s: the same points (in the same order, with
+/// their names and attributes), then the blocks kind by kind, each with its attributes and its
+/// points written as coordinates (a block's reference to a named point is not kept). Numbers are
+/// written in the shortest form that reads back to the same double.
+std::string to_string(const Scene& s);
 
 /// Reads and parses a scene file. Throws `BadInput` when the file cannot be read and
 /// `ParseError` when it is not a valid scene.

@@ -72,11 +72,15 @@ class PlanePainter final : public Painter {
 
   void segment(const Point& p, const Point& q, const Style& st) override {
     arc(p, q, st, st.arrow());
-    if (!st.label().empty()) {
-      const Vec3 m = arc_middle(p, q);
-      const Vec2 at = v_.place(Point(m.z, m.x, m.y));
-      if (norm(at) <= 1.3) c_.label_of(at, st);
-    }
+    if (!st.label().empty()) label_arc(p, q, st);
+  }
+
+  /// Queues the label of `st` at the middle of the arc from p to q, when it is shown.
+  void label_arc(const Point& p, const Point& q, const Style& st) {
+    if (p == antipode(q)) return;
+    const Vec3 m = arc_middle(p, q);
+    const Vec2 at = v_.place(Point(m.z, m.x, m.y));
+    if (norm(at) <= 1.3) c_.label_of(at, st);
   }
 
   void chain(const std::vector<Point>& pts, const Style& st, bool closed) override {
@@ -94,6 +98,7 @@ class PlanePainter final : public Painter {
     }
     for (std::size_t i = 0; i + 1 < n; ++i) arc(pts[i], pts[i + 1], st, st.arrow() && i + 2 == n && !closed);
     if (closed && n > 2) arc(pts[n - 1], pts[0], st, false);
+    if (!st.label().empty() && n >= 2) label_arc(pts[0], pts[1], st);  // at the middle of the first edge
   }
 
   void circle(const std::vector<Point>& pts, const Style& st) override {

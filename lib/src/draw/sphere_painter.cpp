@@ -78,6 +78,8 @@ class SpherePainter final : public Painter {
     if (closed && !st.fill().empty() && n >= 3) region(dense_loop(pts), st);
     for (std::size_t i = 0; i + 1 < n; ++i) arc(pts[i], pts[i + 1], st, st.arrow() && i + 2 == n && !closed);
     if (closed && n > 2) arc(pts[n - 1], pts[0], st, false);
+    if (!st.label().empty() && n >= 2 && !(pts[0] == antipode(pts[1])))  // at the middle of the first edge
+      c_.label_of(v_.project(arc_middle(pts[0], pts[1])), st);
   }
 
   void circle(const std::vector<Point>& pts, const Style& st) override {

@@ -3,7 +3,7 @@
 /// @brief The figure of a scene file: every block of a `t2::Scene` as an item of a `Figure`.
 ///
 /// One conversion for every program that draws scenes (`t2 draw`, the gallery): each kind of
-/// block has its style in `SceneStyles`, and `add_scene` adds the blocks kind by kind —
+/// block has its default style in `SceneStyles`, each object its attributes (scene_style.hpp), and `add_scene` adds the blocks kind by kind —
 /// polygons, circles, lines, segments, then points with their labels — so that within a layer
 /// points are drawn over segments, segments over lines, lines over circles and polygons.
 
@@ -33,7 +33,13 @@ struct SceneStyles {
   static SceneStyles in(const std::string& colour);
 };
 
-/// Adds the blocks of scene s to f, in the styles `styles` (see the file comment). Throws
+/// `base` with the attributes `a` of a scene object set over it. A colour given without a fill
+/// recolours the fill too when `base` has one (a `polygon color=red` is filled red).
+Style styled(Style base, const SceneStyle& a);
+
+/// Adds the blocks of scene s to f, in the styles `styles` (see the file comment), each with
+/// its own attributes over them (`styled`); `handles=yes` adds a small square at each point
+/// that defines the object. Throws
 /// `t2::ParseError` (`file:line: ...`) for a circle that cannot be drawn (its centre or radius
 /// beyond the range of double).
 void add_scene(Figure& f, const Scene& s, const SceneStyles& styles = {});
