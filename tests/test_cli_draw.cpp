@@ -142,7 +142,7 @@ TEST_F(CliDraw, BadUsageExitsTwoAndWritesNothing) {
   write("s.t2", "1 2\n");
   for (const char* args : {"draw", "draw s.t2", "draw s.t2 -o", "draw s.t2 -o a.jpg", "draw s.t2 --format gif -o a.svg",
                            "draw s.t2 --model cube -o a.svg", "draw s.t2 --view 95,0 -o a.svg",
-                           "draw s.t2 --view 10 -o a.svg", "draw s.t2 s.t2 -o a.svg", "draw s.t2 --frob -o a.svg",
+                           "draw s.t2 --view 10 -o a.svg", "draw s.t2 --frob -o a.svg",
                            "draw nowhere.t2 -o a.svg"}) {
     const Result r = t2(args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;

@@ -40,6 +40,28 @@ std::string squared(const t2::Point& a, const t2::Point& b) {
   return fmt::format("[{}, {}]", d.w() > 0 ? 1 : -1, t2::to_string(x.get_d()));
 }
 
+// The answer as a scene: the farthest pair in red (its segment and its points, labelled pK) and,
+// when there is one, the narrowest strip: the edge's line and its parallel through the vertex
+// (through the same point of Ω), in blue.
+t2::Scene answer(const std::vector<t2::Point>& P, std::size_t a, std::size_t b, const t2::Width* w) {
+  t2::Scene s;
+  if (w) {
+    const auto edge = t2::join(P[w->from], P[w->to]);
+    const t2::SceneStyle blue = style_of("color=blue width=1 arrow=no layer=0");
+    s.lines.push_back(t2::SceneLine{scene_point(P[w->from]), scene_point(P[w->to]), 0, blue});
+    s.lines.push_back(t2::SceneLine{scene_point(P[w->vertex]), scene_point(t2::meet(edge, t2::omega<double>())), 0, blue});
+  }
+  if (!(P[a] == P[b]) && !(P[a] == t2::antipode(P[b])))
+    s.segments.push_back(t2::SceneSegment{scene_point(P[a]), scene_point(P[b]), 0, style_of("color=red width=2.5 layer=1")});
+  for (std::size_t i : {a, b}) {
+    t2::SceneStyle st = style_of("color=red size=4.5 layer=3");
+    st.label = fmt::format("p{}", i);
+    s.points.push_back(scene_point(P[i], st));
+  }
+  if (a == b) s.points.pop_back();
+  return s;
+}
+
 int diameter(const Options& o) {
   const t2::Scene scene = read_scene_argument(o.file);
   const std::vector<t2::Point> P = scene_points(scene);
@@ -55,20 +77,9 @@ int diameter(const Options& o) {
   const std::optional<t2::Width> w = !P.empty() && one_side(P) ? t2::width(P) : std::nullopt;
   std::string out = fmt::format("{} {}\nsquared-distance {}\n", a, b, same ? "[1, 0]" : squared(P[a], P[b]));
   if (w) out += fmt::format("width {} {} {}\n", w->from, w->to, w->vertex);
-  if (!o.drawing.svg.empty()) {
-    dr::Figure f;
-    const dr::Style red = dr::Style().color("#d62728").width(2.5).layer(1);
-    if (w) {  // the narrowest strip: the edge's line and its parallel (same point on Ω) through the vertex
-      const auto edge = t2::join(P[w->from], P[w->to]);
-      const auto grey = dr::Style().color("#1f77b4").width(1).layer(0);
-      f.add(edge, grey);
-      f.add(t2::join(P[w->vertex], t2::meet(edge, t2::omega<double>())), grey);
-    }
-    if (!same && !(P[a] == t2::antipode(P[b]))) f.segment(P[a], P[b], red);
-    for (const auto& p : P) f.add(p, dr::Style().color("#7f7f7f").layer(2));
-    for (std::size_t i : {a, b}) f.add(P[i], dr::Style().color("#d62728").label(fmt::format("p{}", i)).layer(3));
-    t2::write_file_atomically(o.drawing.svg, render_models(f, P, o.drawing.model));
-  }
+  write_answer(o.drawing, scene, answer(P, a, b, w ? &*w : nullptr),
+               fmt::format("t2 diameter {}: the farthest pair p{} p{}{} (draw it over its input: t2 draw FILE THIS)",
+                           scene.name, a, b, w ? " and the narrowest strip" : ""));
   fmt::print("{}", out);
   return kOk;
 }

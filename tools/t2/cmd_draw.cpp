@@ -31,7 +31,8 @@ double parse_degrees(const std::string& s, const char* what, double limit) {
 }
 
 struct Options {
-  std::string file, output;
+  std::vector<std::string> files;
+  std::string output;
   std::optional<std::string> format;
   std::string model = "both";
   dr::SphereView sphere;
@@ -56,9 +57,12 @@ dr::Format format_named(const std::string& s) {
 int draw(const Options& o) {
   // The format first: a bad extension must not cost a parse, and must not leave a file.
   const dr::Format fmt = o.format ? format_named(*o.format) : dr::format_of(o.output);
-  const t2::Scene scene = t2::read_scene(o.file);  // ParseError: file:line: message, exit 2
-  const dr::Figure fig = dr::figure_of(scene);
-  const dr::PlaneView plane = fit_plane(scene);
+  // Every file is read before anything is drawn (ParseError: file:line: message, exit 2); the
+  // files are drawn in order, so within a layer a later file is drawn over an earlier one.
+  std::vector<t2::Scene> scenes;
+  for (const auto& file : o.files) scenes.push_back(t2::read_scene(file));
+  dr::PlaneView plane;
+  const dr::Figure fig = compose(scenes, plane);
   t2::write_file_atomically(o.output, render_model(fig, o.model, plane, o.sphere, fmt));
   return kOk;
 }
@@ -66,13 +70,15 @@ int draw(const Options& o) {
 Action setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.description(
-      "Reads the scene file FILE (the format is described in the README, section \"Scene\n"
-      "files\") and draws its points (with their labels), segments (blue), polygons\n"
-      "(green), lines (grey, arrow: orientation) and circles (red: finite, beyond infinity\n"
-      "on the other side, or infinite: a line or Ω), following the conventions of the\n"
+      "Reads the scene files FILE... (the format is described in the README, section \"Scene\n"
+      "files\") and draws them into one picture, each over the ones before it: points (with\n"
+      "their labels), segments (blue), polygons (green), lines (grey, arrow: orientation) and\n"
+      "circles (red: finite, beyond infinity on the other side, or infinite: a line or Ω),\n"
+      "unless an object's style attributes say otherwise, following the conventions of the\n"
       "figures: front side solid with filled markers, back side dashed with hollow markers,\n"
-      "Ω a grey ring (planar model) or the equator (spherical model).");
-  app.add_option("FILE", o->file, "the scene file")->required();
+      "Ω a grey ring (planar model) or the equator (spherical model). An algorithm's answer\n"
+      "(t2 hull FILE --scene OUT, ...) composes with its input: t2 draw FILE OUT -o fig.svg.");
+  app.add_option("FILE", o->files, "the scene files, drawn in order")->required();
   app.add_option("--model", o->model, "plane, sphere or both side by side (default both)")
       ->check(CLI::IsMember({"plane", "sphere", "both"}))
       ->type_name("plane|sphere|both");
@@ -88,7 +94,7 @@ Action setup(CLI::App& app) {
       ->type_name("OUT");
   app.footer(
       "The planar view is centred at the origin and wide enough for every finite point\n"
-      "and every circle of finite radius.\n"
+      "and every circle of finite radius of every file.\n"
       "\n"
       "Exit status: 0 done; 2 bad usage, unreadable file or invalid scene (the message\n"
       "reads file:line: what is wrong; no output file is created).");

@@ -34,18 +34,20 @@ t2::HullAlgorithm algorithm_of(const std::string& s) {
   throw UsageError(fmt::format("unknown algorithm '{}'", s));
 }
 
-// The input points in grey, the hull in green (a polygon, a segment or a point).
-dr::Figure picture(const std::vector<t2::Point>& P, const std::vector<std::size_t>& hull) {
-  dr::Figure f;
-  std::vector<t2::Point> h;
-  for (std::size_t i : hull) h.push_back(P[i]);
-  const dr::Style green = dr::Style().color("#2ca02c").width(2).layer(0);
-  if (h.size() >= 3) f.add(h, dr::Style(green).fill("#2ca02c"));
-  if (h.size() == 2) f.segment(h[0], h[1], green);
-  for (const auto& p : P) f.add(p, dr::Style().color("#7f7f7f").layer(1));
-  for (std::size_t k = 0; k < hull.size(); ++k)
-    f.add(P[hull[k]], dr::Style().color("#000000").label(fmt::format("p{}", hull[k])).layer(2));
-  return f;
+// The hull as a scene: a green polygon (a segment, a point), its vertices labelled pK.
+t2::Scene answer(const std::vector<t2::Point>& P, const std::vector<std::size_t>& hull) {
+  t2::Scene s;
+  std::vector<t2::ScenePoint> h;
+  for (std::size_t i : hull) {
+    t2::SceneStyle st = style_of("color=black size=4.5 layer=3");
+    st.label = fmt::format("p{}", i);
+    s.points.push_back(scene_point(P[i], st));
+    h.push_back(scene_point(P[i]));
+  }
+  const t2::SceneStyle green = style_of("color=green width=2 layer=0");
+  if (h.size() >= 3) s.polygons.push_back(t2::ScenePolygon{h, 0, style_of("color=green width=2 fill=green layer=0")});
+  if (h.size() == 2) s.segments.push_back(t2::SceneSegment{h[0], h[1], 0, green});
+  return s;
 }
 
 int hull(const Options& o) {
@@ -58,7 +60,9 @@ int hull(const Options& o) {
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex hull: {}", scene.name, e.what()));
   }
-  if (!o.drawing.svg.empty()) write_drawing(o.drawing, picture(P, h), fit_plane(P));
+  write_answer(o.drawing, scene, answer(P, h),
+               fmt::format("t2 hull {}: the convex hull, {} vertices (draw it over its input: t2 draw FILE THIS)",
+                           scene.name, h.size()));
   std::string out;
   for (std::size_t i : h) out += fmt::format("{}\n", i);
   fmt::print("{}", out);

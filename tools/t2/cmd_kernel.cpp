@@ -23,6 +23,29 @@ struct Options {
   AnswerDrawing drawing;
 };
 
+// The kernel as a scene: a green polygon, segment or point. Two consecutive corners on Ω that
+// are antipodes have no segment of T² between them: that edge (along Ω) is left out, the
+// others are drawn as segments.
+t2::Scene answer(const std::vector<t2::Point>& corners) {
+  t2::Scene s;
+  const t2::SceneStyle green = style_of("color=green width=2 layer=0");
+  std::vector<t2::ScenePoint> c;
+  for (const auto& p : corners) c.push_back(scene_point(p));
+  const std::size_t n = c.size();
+  bool antipodal = false;
+  for (std::size_t i = 0; n >= 3 && i < n; ++i) antipodal |= c[i].point == t2::antipode(c[(i + 1) % n].point);
+  if (n >= 3 && !antipodal) s.polygons.push_back(t2::ScenePolygon{c, 0, style_of("color=green width=2 fill=green layer=0")});
+  for (std::size_t i = 0; antipodal && i < n; ++i)
+    if (!(c[i].point == t2::antipode(c[(i + 1) % n].point))) s.segments.push_back(t2::SceneSegment{c[i], c[(i + 1) % n], 0, green});
+  if (n == 2) s.segments.push_back(t2::SceneSegment{c[0], c[1], 0, green});
+  if (n == 1) {
+    t2::SceneStyle st = style_of("color=green size=4.5 layer=3");
+    st.label = "kernel";
+    s.points.push_back(scene_point(c[0].point, st));
+  }
+  return s;
+}
+
 int polygon_kernel(const Options& o) {
   const t2::Scene scene = read_scene_argument(o.file);
   if (scene.polygons.empty()) throw t2::BadInput(fmt::format("{}: t2 kernel needs a polygon block, the file has none", scene.name));
@@ -46,15 +69,10 @@ int polygon_kernel(const Options& o) {
                                                 : "unbounded";
   std::string out = fmt::format("{}\n", kind);
   for (const auto& c : corners) out += fmt::format("{} {} {}\n", t2::to_string(c.w()), t2::to_string(c.x()), t2::to_string(c.y()));
-  if (!o.drawing.svg.empty()) {
-    dr::Figure f;
-    f.add(V, dr::Style().color("#000000").width(1.5).layer(1));
-    const dr::Style green = dr::Style().color("#2ca02c").width(2).layer(0);
-    if (corners.size() >= 3) f.add(corners, dr::Style(green).fill("#2ca02c"));
-    if (corners.size() == 2) f.segment(corners[0], corners[1], green);
-    if (corners.size() == 1) f.add(corners[0], dr::Style(green).label("kernel"));
-    t2::write_file_atomically(o.drawing.svg, render_models(f, V, o.drawing.model));
-  }
+  write_answer(o.drawing, scene, answer(corners),
+               fmt::format("t2 kernel {}: the kernel of the polygon of line {}, {} (draw it over its input: t2 draw "
+                           "FILE THIS)",
+                           scene.name, block.line, kind));
   fmt::print("{}", out);
   return kOk;
 }

@@ -22,6 +22,30 @@ struct Options {
   AnswerDrawing drawing;
 };
 
+// The layers as a scene: one polygon (a segment, a point) per layer, outermost first, in the
+// colours of the palette in turn, labelled L1, L2, ...
+t2::Scene answer(const std::vector<t2::Point>& P, const std::vector<std::vector<std::size_t>>& L) {
+  static const char* colours[] = {"blue", "orange", "green", "red", "purple", "brown"};
+  t2::Scene s;
+  for (std::size_t j = 0; j < L.size(); ++j) {
+    std::vector<t2::ScenePoint> h;
+    for (std::size_t i : L[j]) h.push_back(scene_point(P[i]));
+    t2::SceneStyle st = style_of(fmt::format("color={} layer=0", colours[j % 6]));
+    st.label = fmt::format("L{}", j + 1);
+    if (h.size() >= 3) {
+      st.width = 2, st.fill = "";
+      s.polygons.push_back(t2::ScenePolygon{h, 0, st});
+    } else if (h.size() == 2) {
+      st.width = 2;
+      s.segments.push_back(t2::SceneSegment{h[0], h[1], 0, st});
+    } else {
+      st.size = 4.5;
+      s.points.push_back(scene_point(h[0].point, st));
+    }
+  }
+  return s;
+}
+
 int layers(const Options& o) {
   const t2::Scene scene = read_scene_argument(o.file);
   const std::vector<t2::Point> P = scene_points(scene);
@@ -31,19 +55,9 @@ int layers(const Options& o) {
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex layers: {}", scene.name, e.what()));
   }
-  if (!o.drawing.svg.empty()) {
-    static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
-    dr::Figure f;
-    for (std::size_t j = 0; j < L.size(); ++j) {
-      std::vector<t2::Point> h;
-      for (std::size_t i : L[j]) h.push_back(P[i]);
-      const dr::Style s = dr::Style().color(colours[j % 6]).width(2).layer(0);
-      if (h.size() >= 3) f.add(h, s);
-      if (h.size() == 2) f.segment(h[0], h[1], s);
-    }
-    for (const auto& p : P) f.add(p, dr::Style().color("#000000").layer(1));
-    t2::write_file_atomically(o.drawing.svg, render_models(f, P, o.drawing.model));
-  }
+  write_answer(o.drawing, scene, answer(P, L),
+               fmt::format("t2 layers {}: {} convex layers (draw them over their input: t2 draw FILE THIS)",
+                           scene.name, L.size()));
   std::string out;
   for (const auto& layer : L) {
     for (std::size_t k = 0; k < layer.size(); ++k) out += (k ? " " : "") + std::to_string(layer[k]);

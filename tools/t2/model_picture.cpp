@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "t2/draw/scene_figure.hpp"
+#include "t2/error.hpp"
 #include "t2/io.hpp"
 
 namespace t2cli {
@@ -16,7 +18,27 @@ void add_drawing_options(CLI::App& app, AnswerDrawing& d, const std::string& wha
   app.add_option("--model", d.model, "the models drawn: plane, sphere or both (default both)")
       ->type_name("M")
       ->check(CLI::IsMember({"plane", "sphere", "both"}));
+  app.add_option("--scene", d.scene,
+                 "also write the answer as a scene file to OUT (atomically), styled to be drawn over\n"
+                 "the input: t2 draw FILE OUT -o fig.svg")
+      ->type_name("OUT");
 }
+
+t2::SceneStyle style_of(std::string_view attributes) {
+  t2::SceneStyle st;
+  std::size_t b = 0;
+  while (b < attributes.size()) {
+    std::size_t e = attributes.find(' ', b);
+    if (e == std::string_view::npos) e = attributes.size();
+    const std::string_view word = attributes.substr(b, e - b);
+    const std::size_t eq = word.find('=');
+    if (!word.empty()) t2::set_scene_attribute(st, word.substr(0, eq), word.substr(eq + 1), std::nullopt);
+    b = e + 1;
+  }
+  return st;
+}
+
+t2::ScenePoint scene_point(const t2::Point& p, t2::SceneStyle style) { return t2::ScenePoint{p, 0, {}, std::move(style)}; }
 
 namespace {
 
@@ -76,13 +98,26 @@ std::string render_model(const dr::Figure& f, const std::string& model, const dr
   return dr::render_both(f, plane, sphere, format);
 }
 
-std::string render_models(const dr::Figure& f, const std::vector<t2::Point>& points, const std::string& model) {
-  return render_model(f, model, fit_plane(points));
+dr::Figure compose(std::span<const t2::Scene> scenes, dr::PlaneView& plane) {
+  dr::Figure f;
+  plane = dr::PlaneView();
+  plane.half_width = 0;
+  for (const auto& s : scenes) {
+    dr::add_scene(f, s);
+    plane.half_width = std::max(plane.half_width, fit_plane(s).half_width);
+  }
+  return f;
 }
 
-void write_drawing(const AnswerDrawing& d, const dr::Figure& f, const dr::PlaneView& plane) {
-  if (d.svg.empty()) return;
-  t2::write_file_atomically(d.svg, render_model(f, d.model, plane));
+void write_answer(const AnswerDrawing& d, const t2::Scene& input, t2::Scene answer, const std::string& header) {
+  answer.name = d.scene.empty() ? "<answer>" : d.scene;
+  if (!d.svg.empty()) {
+    const t2::Scene both[] = {input, answer};
+    dr::PlaneView plane;
+    const dr::Figure f = compose(both, plane);
+    t2::write_file_atomically(d.svg, render_model(f, d.model, plane));
+  }
+  if (!d.scene.empty()) t2::write_file_atomically(d.scene, "# " + header + "\n" + t2::to_string(answer));
 }
 
 }  // namespace t2cli

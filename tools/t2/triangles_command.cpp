@@ -38,29 +38,33 @@ std::string listing(const t2::Triangulation& tr, bool infinite) {
   return out;
 }
 
-// The triangles in light blue with their edges, the hull in green, the points labelled pK.
-dr::Figure picture(const std::vector<t2::Point>& P, const t2::Triangulation& tr) {
-  dr::Figure f;
-  const dr::Style tri = dr::Style().color("#1f77b4").width(1).fill("#1f77b4").fill_opacity(0.12).layer(0);
+// The triangulation as a scene: the triangles in light blue with their edges, the hull edges in
+// green, and (up to 60 points) the labels pK of the points, without markers: the input has them.
+t2::Scene answer(const std::vector<t2::Point>& P, const t2::Triangulation& tr) {
+  t2::Scene s;
+  const t2::SceneStyle tri = style_of("color=blue width=1 fill=blue opacity=0.12 layer=0");
+  const t2::SceneStyle edge = style_of("color=blue width=1 layer=0");
   for (const auto& t : tr.finite_triangles()) {
     const t2::Point &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
     if (!(a == t2::antipode(b)) && !(b == t2::antipode(c)) && !(c == t2::antipode(a))) {
-      f.add(std::vector<t2::Point>{a, b, c}, tri);
+      s.polygons.push_back(t2::ScenePolygon{{scene_point(a), scene_point(b), scene_point(c)}, 0, tri});
       continue;
     }
     // A flat face of T² input (two antipodal vertices): its segment between the antipodes is
     // not defined by its endpoints, so only its other edges are drawn.
     for (int k = 0; k < 3; ++k)
-      if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]))) f.segment(P[t[k]], P[t[(k + 1) % 3]], tri);
+      if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]])))
+        s.segments.push_back(t2::SceneSegment{scene_point(P[t[k]]), scene_point(P[t[(k + 1) % 3]]), 0, edge});
   }
-  for (auto [a, b] : tr.hull_edges()) f.segment(P[a], P[b], dr::Style().color("#2ca02c").width(2).layer(1));
-  const bool labels = P.size() <= 60;
-  for (std::size_t k = 0; k < P.size(); ++k) {
-    dr::Style s = dr::Style().color("#000000").layer(2);
-    if (labels) s.label(fmt::format("p{}", k)); else s.size(1.5);
-    f.add(P[k], s);
-  }
-  return f;
+  for (auto [a, b] : tr.hull_edges())
+    s.segments.push_back(t2::SceneSegment{scene_point(P[a]), scene_point(P[b]), 0, style_of("color=green width=2 layer=1")});
+  if (P.size() <= 60)
+    for (std::size_t k = 0; k < P.size(); ++k) {
+      t2::SceneStyle st = style_of("color=black marker=none layer=2");
+      st.label = fmt::format("p{}", k);
+      s.points.push_back(scene_point(P[k], st));
+    }
+  return s;
 }
 
 int run(const TrianglesOptions& o, const std::string& command, const TriangulationBuilder& build) {
@@ -77,7 +81,9 @@ int run(const TrianglesOptions& o, const std::string& command, const Triangulati
                scene.points[dropped].line, dropped, kept, scene.points[kept].line);
   if (tr.dimension() < 2 && P.size() >= 3)
     fmt::print(stderr, "t2 {}: {}: no triangle: the points are collinear\n", command, scene.name);
-  if (!o.drawing.svg.empty()) write_drawing(o.drawing, picture(P, tr), fit_plane(P));
+  write_answer(o.drawing, scene, answer(P, tr),
+               fmt::format("t2 {} {}: {} triangles (draw them over their input: t2 draw FILE THIS)", command,
+                           scene.name, tr.finite_triangles().size()));
   fmt::print("{}", listing(tr, o.infinite));
   return kOk;
 }
