@@ -157,5 +157,31 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   EXPECT_EQ(numbers(last_step_field(slurp(dir_ / "x.html"), "chain")), (std::vector<std::size_t>{0, 2}));
 }
 
+// The "Watch it" commands of chapters 06-10 name an algorithm of t2 animate and a valid data
+// file; under the long label they run as printed, from the top of the repository (here a folder
+// whose data/ is the repository's), and write their pages (some seconds of CPU in all).
+TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
+  fs::create_directory_symlink(fs::path(T2_SOURCE_DIR) / "data", dir_ / "data");
+  const std::regex command("t2 animate ([a-z-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
+  int commands = 0;
+  for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
+    const std::string md = t2::read_file(fs::path(T2_SOURCE_DIR) / "chapters" / ch / "chapter.md");
+    int in_chapter = 0;
+    for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
+      const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
+      EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge-hull" || algo == "triangulate" ||
+                  algo == "delaunay")
+          << ch << ": " << m->str();
+      EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
+      if (testing::scale() == 1) continue;
+      const Result r = t2(m->str().substr(3));
+      EXPECT_EQ(r.status, 0) << ch << ": " << m->str() << ": " << r.err;
+      EXPECT_TRUE(slurp(dir_ / out).starts_with("<!DOCTYPE html")) << m->str();
+    }
+    EXPECT_GE(in_chapter, 1) << ch << " links no animation on a data file";
+  }
+  EXPECT_GE(commands, 5);
+}
+
 }  // namespace
 }  // namespace t2::testing
