@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli_testing.hpp"
+#include "testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/scene.hpp"
 #include "t2/triangulation/delaunay.hpp"
