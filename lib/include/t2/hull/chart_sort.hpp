@@ -32,7 +32,8 @@ struct Indexed {
 /// bucket boundaries; points with equal x share a bucket, where (x, y) decides. (When the
 /// range overflows, s is not a positive finite number and one bucket holds everything.) The
 /// buckets, about 128 points each for spread input, fit in the cache: on 10⁷ points on a circle,
-/// where nothing can be thrown away, this sort takes about half the time of one `std::sort`.
+/// where nothing can be thrown away, this sort takes about two thirds of the time of one
+/// `std::sort` (0.85 s against 1.3 s).
 template <class K>
 std::vector<Indexed> sorted_in_chart(std::span<const Point> P, const std::vector<std::size_t>& idx,
                                      const ChartOrder<K>& order) {
