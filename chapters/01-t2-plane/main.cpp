@@ -154,11 +154,15 @@ void points_t2(const std::filesystem::path& dir) {
 void orientation(const std::filesystem::path& dir) {
   std::cout << "\n== 3. Orientation needs the signs\n";
   //> orient-signs
-  const ExactPoint a(1, 0, 0), b(1, 4, 0), c(1, 0, 3);  // a counter-clockwise front triangle
-  const Integer det = t2::det3(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y());
-  std::cout << "det(a, b, c) = " << det << "   orient(a, b, c) = " << sym(t2::orient(a, b, c)) << '\n';
+  const ExactPoint a(1, 0, 0), b(1, 4, 0),
+      c(1, 0, 3);  // a counter-clockwise front triangle
+  const Integer det =
+      t2::det3(a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y());
+  std::cout << "det(a, b, c) = " << det
+            << "   orient(a, b, c) = " << sym(t2::orient(a, b, c)) << '\n';
   std::cout << "orient(5a, b, c) = " << sym(t2::orient(ExactPoint(5, 0, 0), b, c))
-            << "   orient(antipode(a), b, c) = " << sym(t2::orient(t2::antipode(a), b, c)) << '\n';
+            << "   orient(antipode(a), b, c) = " << sym(t2::orient(t2::antipode(a), b, c))
+            << '\n';
   std::cout << "orient(antipode(a), antipode(b), antipode(c)) = "
             << sym(t2::orient(t2::antipode(a), t2::antipode(b), t2::antipode(c))) << '\n';
   //< orient-signs
@@ -198,15 +202,19 @@ void orientation(const std::filesystem::path& dir) {
 void parallels(const std::filesystem::path& dir) {
   std::cout << "\n== 4. Lines, Omega and parallels\n";
   //> parallels
-  const t2::Line l = t2::join(Point(1, 0, 0), Point(1, 1, 0));  // y = 0, oriented towards +x
+  const t2::Line l =
+      t2::join(Point(1, 0, 0), Point(1, 1, 0));  // y = 0, oriented towards +x
   const t2::Line m = t2::join(Point(1, 0, 1), Point(1, 1, 1));  // y = 1, also towards +x
   const Point x = t2::meet(l, m);                               // where they meet
-  std::cout << "l = " << t2::to_string(l) << "   m = " << t2::to_string(m) << "   meet(l, m) = " << t2::to_string(x)
-            << " (" << side_name(t2::side_of(x)) << ")\n";
-  std::cout << "meet(m, l) = " << t2::to_string(t2::meet(m, l)) << "   Omega = " << t2::to_string(t2::omega())
-            << "   side(Omega, p) for p = [1,2,1], [-2,1,3], [0,1,1]: " << sym(t2::side(t2::omega(), Point(1, 2, 1)))
-            << ' ' << sym(t2::side(t2::omega(), Point(-2, 1, 3))) << ' ' << sym(t2::side(t2::omega(), Point(0, 1, 1)))
-            << '\n';
+  std::cout << "l = " << t2::to_string(l) << "   m = " << t2::to_string(m)
+            << "   meet(l, m) = " << t2::to_string(x) << " (" << side_name(t2::side_of(x))
+            << ")\n";
+  std::cout << "meet(m, l) = " << t2::to_string(t2::meet(m, l))
+            << "   Omega = " << t2::to_string(t2::omega())
+            << "   side(Omega, p) for p = [1,2,1], [-2,1,3], [0,1,1]: "
+            << sym(t2::side(t2::omega(), Point(1, 2, 1))) << ' '
+            << sym(t2::side(t2::omega(), Point(-2, 1, 3))) << ' '
+            << sym(t2::side(t2::omega(), Point(0, 1, 1))) << '\n';
   //< parallels
   // Independent check: the cross product of the coefficient triples, by hand, on integers.
   const ExactPoint lx(0, 0, 1), mx(-1, 0, 1);  // <W,X,Y> of l and m as triples
@@ -239,8 +247,8 @@ void sides(const std::filesystem::path& dir) {
   std::cout << "\n== 5. The two sides of a line\n";
   //> sides
   const t2::Line l(-1, 1, 1);  // the points with -w + x + y = 0: the front line x + y = 1
-  for (const Point& r : {Point(1, 1, 1), Point(-1, -1, -1), Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0),
-                         Point(0, -1, 1)})
+  for (const Point& r : {Point(1, 1, 1), Point(-1, -1, -1), Point(1, 0, 0),
+                         Point(-1, 0, 0), Point(0, 1, 0), Point(0, -1, 1)})
     std::cout << "side(l, " << t2::to_string(r) << ") = " << sym(t2::side(l, r)) << '\n';
   //< sides
   require(t2::side(l, Point(1, 1, 1)) == t2::POSITIVE && t2::side(l, Point(-1, -1, -1)) == t2::NEGATIVE,
@@ -271,11 +279,14 @@ void sides(const std::filesystem::path& dir) {
 void duality(const std::filesystem::path& dir) {
   std::cout << "\n== 6. Duality\n";
   //> duality-demo
-  const ExactPoint p(1, 1, 0), q(2, 1, 1), r(1, 0, 1);  // three points of the line x + y = 1
-  const t2::ExactLine P = t2::dual(p), Q = t2::dual(q), R = t2::dual(r);  // their dual lines
+  const ExactPoint p(1, 1, 0), q(2, 1, 1),
+      r(1, 0, 1);  // three points of the line x + y = 1
+  const t2::ExactLine P = t2::dual(p), Q = t2::dual(q),
+                      R = t2::dual(r);  // their dual lines
   const ExactPoint z = t2::meet(P, Q);
-  std::cout << "orient(p, q, r) = " << sym(t2::orient(p, q, r)) << "   P = " << t2::to_string(P)
-            << "  Q = " << t2::to_string(Q) << "  R = " << t2::to_string(R) << "\n";
+  std::cout << "orient(p, q, r) = " << sym(t2::orient(p, q, r))
+            << "   P = " << t2::to_string(P) << "  Q = " << t2::to_string(Q)
+            << "  R = " << t2::to_string(R) << "\n";
   std::cout << "meet(P, Q) = " << t2::to_string(z) << "   side(R, meet(P, Q)) = "
             << sym(t2::side(R, z)) << "   dual(join(p, q)) == meet(P, Q): "
             << (t2::dual(t2::join(p, q)) == z) << "\n";
@@ -310,20 +321,24 @@ void duality(const std::filesystem::path& dir) {
 void perspective(const std::filesystem::path& dir) {
   std::cout << "\n== 7. Perspective: a line sent to Omega\n";
   //> perspective-map
-  // The eye is the origin and looks along +y; the image line is y = 1. M sends [w, x, y] to
-  // [y, x, -w]: a front point (x, y) goes to (x/y, -1/y), whose first coordinate is where the
-  // ray from the eye through it meets the image line. The eye's line y = 0 goes to Omega.
+  // The eye is the origin and looks along +y; the image line is y = 1. M sends [w, x, y]
+  // to [y, x, -w]: a front point (x, y) goes to (x/y, -1/y), whose first coordinate is
+  // where the ray from the eye through it meets the image line. The eye's line y = 0 goes
+  // to Omega.
   const t2::ExactAffine M({{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}});
   //< perspective-map
   //> perspective-demo
-  const ExactPoint a = ExactPoint::cartesian(-1, 2), b = ExactPoint::cartesian(2, -1);  // b: behind
+  const ExactPoint a = ExactPoint::cartesian(-1, 2),
+                   b = ExactPoint::cartesian(2, -1);  // b: behind
   const ExactPoint Ma = t2::transform(M, a), Mb = t2::transform(M, b);
   const t2::ExactSegment image = t2::transform(M, t2::ExactSegment(a, b));
   std::cout << "det M = " << sym(M.determinant_sign()) << "   M(<0, 0, 1>) = "
             << t2::to_string(t2::transform(M, t2::ExactLine(0, 0, 1))) << "\n";
-  std::cout << "M a = " << t2::to_string(Ma) << " (" << side_name(t2::side_of(Ma)) << ")   M b = "
-            << t2::to_string(Mb) << " (" << side_name(t2::side_of(Mb)) << ")\n";
-  std::cout << "image of segment ab leaves the front at " << t2::to_string(t2::point_at_infinity(image))
+  std::cout << "M a = " << t2::to_string(Ma) << " (" << side_name(t2::side_of(Ma))
+            << ")   M b = " << t2::to_string(Mb) << " (" << side_name(t2::side_of(Mb))
+            << ")\n";
+  std::cout << "image of segment ab leaves the front at "
+            << t2::to_string(t2::point_at_infinity(image))
             << "; the front part runs from u = -1/2 to u = +infinity\n";
   //< perspective-demo
   require(M.determinant_sign() == t2::POSITIVE && t2::transform(M, t2::ExactLine(0, 0, 1)) == t2::omega<Integer>(),

@@ -43,9 +43,11 @@ void lines() {
   std::cout << "== 1. Lines\n";
   //> line-demo
   const P p = P::cartesian(0, 0), q = P::cartesian(2, 1);
-  const t2::ExactLine l = t2::join(p, q);        // oriented: positive side on the left of p -> q
-  const t2::ExactLine m = t2::join(q, p);        // the same points, the opposite orientation
-  const t2::ExactLine o = t2::omega<Integer>();  // the line at infinity, front side positive
+  const t2::ExactLine l =
+      t2::join(p, q);  // oriented: positive side on the left of p -> q
+  const t2::ExactLine m = t2::join(q, p);  // the same points, the opposite orientation
+  const t2::ExactLine o =
+      t2::omega<Integer>();  // the line at infinity, front side positive
   //< line-demo
   std::cout << "  join(p, q) = " << t2::to_string(l) << ", join(q, p) = " << t2::to_string(m)
             << ", opposite(join(p, q)) == join(q, p): " << (t2::opposite(l) == m) << "\n";
@@ -63,14 +65,14 @@ void segments() {
   std::cout << "== 2. Segments\n";
   //> segment-cases
   const P a = P::cartesian(-2, -1), b = P::cartesian(1, 2);  // two front points
-  const P c(-1, 1, -1), d(-2, -4, -2);                      // two back points: (-1, 1), (2, 1)
+  const P c(-1, 1, -1), d(-2, -4, -2);  // two back points: (-1, 1), (2, 1)
   const t2::ExactSegment front(a, b), back(c, d), crossing(a, d);
   //< segment-cases
   for (const auto* s : {&front, &back, &crossing})
     std::cout << "  " << t2::to_string(*s) << ": kind " << t2::to_string(t2::kind(*s)) << "\n";
   //> segment-crossing
   const P at_omega = t2::point_at_infinity(crossing);         // |w_d| a + |w_a| d
-  const auto pieces = t2::planar_pieces(crossing);            // two half-rays in the planar model
+  const auto pieces = t2::planar_pieces(crossing);  // two half-rays in the planar model
   //< segment-crossing
   std::cout << "  point_at_infinity(a d) = " << str(at_omega) << "; planar pieces: ";
   for (std::size_t i = 0; i < pieces.size(); ++i)
@@ -146,9 +148,11 @@ void rays_vectors_directions() {
 void triangles() {
   std::cout << "== 4. Triangles\n";
   //> triangle-demo
-  const P a = P::cartesian(0, 0), b = P::cartesian(3, 0), c(-1, -1, -2);  // c: back point (1, 2)
+  const P a = P::cartesian(0, 0), b = P::cartesian(3, 0),
+          c(-1, -1, -2);  // c: back point (1, 2)
   const t2::ExactTriangle t(a, b, c);
-  const P inside = P::cartesian(1, -1);  // front, below the x axis: inside, via Omega and the back
+  const P inside =
+      P::cartesian(1, -1);  // front, below the x axis: inside, via Omega and the back
   //< triangle-demo
   std::cout << "  " << t2::to_string(t) << ": orientation " << sym(t2::orientation(t)) << "\n";
   for (const P& x : {inside, t2::antipode(inside), P::cartesian(1, 1), P(0, 1, 2), P(0, -1, -2)}) {
@@ -187,7 +191,8 @@ void rectangles_and_boxes() {
   //> isorect-demo
   const P a = P::cartesian(-1, 2);
   const t2::ExactIsoRect finite(a, T1::finite(Integer(3)), T1::finite(Integer(-1)));
-  const t2::ExactIsoRect quadrant(a, T1::plus_infinity(), T1::plus_infinity());  // both extents +inf
+  const t2::ExactIsoRect quadrant(a, T1::plus_infinity(),
+                                  T1::plus_infinity());  // both extents +inf
   //< isorect-demo
   std::cout << "  finite:   " << t2::to_string(finite) << "\n  quadrant: " << t2::to_string(quadrant) << "\n";
   //> seed-corner
@@ -207,10 +212,14 @@ void rectangles_and_boxes() {
           [&] { return t2::to_string(t2::iso_rect(a, t2::antipode(P::cartesian(1, 1)))); });
 
   //> bbox-demo
-  const t2::ExactBBox b1(P::cartesian(0, 0), T1::finite(Integer(2)), T1::finite(Integer(1)));
-  const t2::ExactBBox b2(P::cartesian(1, 3), T1::plus_infinity(), T1::finite(Integer(1)));   // x to +inf
-  const t2::ExactBBox b3(P::cartesian(5, 0), T1::minus_infinity(), T1::finite(Integer(1)));  // x to -inf
-  const t2::ExactBBox back(P(-1, 0, 0), T1::minus_infinity(), T1::finite(Integer(1)));      // back side
+  const t2::ExactBBox b1(P::cartesian(0, 0), T1::finite(Integer(2)),
+                         T1::finite(Integer(1)));
+  const t2::ExactBBox b2(P::cartesian(1, 3), T1::plus_infinity(),
+                         T1::finite(Integer(1)));  // x to +inf
+  const t2::ExactBBox b3(P::cartesian(5, 0), T1::minus_infinity(),
+                         T1::finite(Integer(1)));  // x to -inf
+  const t2::ExactBBox back(P(-1, 0, 0), T1::minus_infinity(),
+                           T1::finite(Integer(1)));  // back side
   //< bbox-demo
   std::cout << "  b1 = " << t2::to_string(b1) << "\n  b2 = " << t2::to_string(b2) << "\n  b3 = " << t2::to_string(b3)
             << "\n  back = " << t2::to_string(back) << "\n";
@@ -284,10 +293,11 @@ void circles() {
 void maps() {
   std::cout << "== 7. Affine and projective maps\n";
   //> map-demo
-  const auto rot = t2::ExactAffine::rotation(Integer(3), Integer(4), Integer(5));  // sin 3/5, cos 4/5
+  const auto rot =
+      t2::ExactAffine::rotation(Integer(3), Integer(4), Integer(5));  // sin 3/5, cos 4/5
   const auto mirror = t2::ExactAffine({{{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}});      // y -> -y
   const auto flip = t2::ExactAffine::scaling(Integer(1), Integer(-1));           // den < 0
-  const auto persp = t2::ExactAffine({{{1, 1, 0}, {0, 1, 0}, {0, 0, 1}}});        // w' = w + x
+  const auto persp = t2::ExactAffine({{{1, 1, 0}, {0, 1, 0}, {0, 0, 1}}});  // w' = w + x
   //< map-demo
   const P p = P::cartesian(5, 0), q = P::cartesian(0, 5), r = P::cartesian(-5, 0);
   for (const auto* m : {&rot, &mirror, &flip, &persp}) {

@@ -52,13 +52,16 @@ void circles() {
   //> distance-order
   const ExactPoint c(1, 0, 0);  // the front origin
   std::cout << "d2(c, p) for the points 1 to 6:";
-  for (const ExactPoint& p : order_points()) std::cout << " " << t2::to_string(t2::squared_distance(c, p));
+  for (const ExactPoint& p : order_points())
+    std::cout << " " << t2::to_string(t2::squared_distance(c, p));
   std::cout << "\n";
   const t2::ExactT1 five = t2::squared_distance(c, ExactPoint(-1, 0, -5));  // back, 5 away
   const t2::ExactT1 one = t2::squared_distance(c, ExactPoint(-1, 0, 1));    // back, 1 away
-  std::cout << "compare(back at 5, back at 1) = " << sym(t2::compare_distance_values(five, one))
+  std::cout << "compare(back at 5, back at 1) = "
+            << sym(t2::compare_distance_values(five, one))
             << "   compare(back at 1, antipode) = "
-            << sym(t2::compare_distance_values(one, t2::squared_distance(c, t2::antipode(c))))
+            << sym(t2::compare_distance_values(one,
+                                               t2::squared_distance(c, t2::antipode(c))))
             << "\n";
   //< distance-order
   const std::vector<ExactPoint> ranked = order_points();
@@ -96,11 +99,14 @@ void circles() {
 
   //> incircle-demo
   const ExactPoint a = ExactPoint::cartesian(1, 0), b = ExactPoint::cartesian(0, 1),
-                   d = ExactPoint::cartesian(-1, 0);  // counter-clockwise on the unit circle
+                   d = ExactPoint::cartesian(-1,
+                                             0);  // counter-clockwise on the unit circle
   const ExactPoint queries[] = {ExactPoint::cartesian(0, 0), ExactPoint::cartesian(2, 0),
-                                ExactPoint::cartesian(0, -1), ExactPoint(-1, 0, 0), ExactPoint(0, 1, 0)};
+                                ExactPoint::cartesian(0, -1), ExactPoint(-1, 0, 0),
+                                ExactPoint(0, 1, 0)};
   for (const ExactPoint& q : queries)
-    std::cout << "q = " << str(q) << ": in_circle(a, b, d, q) = " << sym(t2::in_circle(a, b, d, q))
+    std::cout << "q = " << str(q)
+              << ": in_circle(a, b, d, q) = " << sym(t2::in_circle(a, b, d, q))
               << ", in_circle(a, d, b, q) = " << sym(t2::in_circle(a, d, b, q))
               << ", in_disk = " << sym(t2::in_disk(a, b, d, q)) << "\n";
   //< incircle-demo

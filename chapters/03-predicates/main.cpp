@@ -89,7 +89,7 @@ void join_meet_duality() {
   for (int i = -9; i <= 9; ++i)
     for (int j = -9; j <= 9; ++j) {
       const t2::ExactLine l(i % 3, i / 3, 1), mm(j / 3, 1, j % 3);
-      if (l == mm || l == t2::reverse(mm)) continue;  // one line: no meet
+      if (l == mm || l == t2::opposite(mm)) continue;  // one line: no meet
       const ExactPoint z = t2::meet(l, mm);
       const ExactPoint t(mm.X() * z.y() - mm.Y() * z.x(), mm.Y() * z.w() - mm.W() * z.y(),
                          mm.W() * z.x() - mm.X() * z.w());  // t = m × z, along m at z
@@ -101,9 +101,9 @@ void join_meet_duality() {
   std::cout << "meet(l, m): m crosses l from - to + there, on " << rule_ok << " of " << line_pairs
             << " pairs of lines\n";
   try {
-    (void)t2::meet(ab, t2::reverse(ab));
+    (void)t2::meet(ab, t2::opposite(ab));
   } catch (const t2::Undefined& e) {
-    std::cout << "meet(ab, reverse(ab)) throws t2::Undefined: " << e.what() << "\n";
+    std::cout << "meet(ab, opposite(ab)) throws t2::Undefined: " << e.what() << "\n";
   }
   // Duality: the point with the line's coordinates, and back. side(l, p) = side(dual(p), dual(l)).
   int checked = 0, agree = 0;
@@ -143,10 +143,14 @@ void point_on_segment() {
     return false;
   };
   //> on-segment-demo
-  const ExactPoint p(1, 0, 0), q(-1, -2, 0);  // p front, q back: the segment runs through Omega
-  const bool at_omega = t2::on_segment(p, q, ExactPoint(0, -1, 0));    // where it crosses Omega
-  const bool other_omega = t2::on_segment(p, q, ExactPoint(0, 1, 0));  // the antipode of that
-  const bool front_ray = t2::on_segment(p, q, ExactPoint(1, -1, 0));   // (-1, 0), front side
+  const ExactPoint p(1, 0, 0),
+      q(-1, -2, 0);  // p front, q back: the segment runs through Omega
+  const bool at_omega =
+      t2::on_segment(p, q, ExactPoint(0, -1, 0));  // where it crosses Omega
+  const bool other_omega =
+      t2::on_segment(p, q, ExactPoint(0, 1, 0));  // the antipode of that
+  const bool front_ray =
+      t2::on_segment(p, q, ExactPoint(1, -1, 0));  // (-1, 0), front side
   const bool between = t2::on_segment(p, q, ExactPoint(1, 1, 0));      // (1, 0): NOT on it
   //< on-segment-demo
   std::cout << "p = " << str(p) << ", q = " << str(q) << ": [0,-1,0] " << at_omega << ", [0,1,0] " << other_omega
@@ -182,18 +186,21 @@ void point_on_segment() {
 
 namespace sketch {
 //> lex-order
-// Compare normalized coordinates [w/|w|, x/|w|, y/|w|] without dividing: first the side of T²
-// (back < Omega < front), then x/|w| against x'/|w'| as x·|w'| against x'·|w|, then y likewise.
-// For two points of Omega the seed gives no normalization; here they are ordered by x then y
-// after scaling by max(|x|, |y|), compared the same way by cross-multiplication.
+// Compare normalized coordinates [w/|w|, x/|w|, y/|w|] without dividing: first the side
+// of T² (back < Omega < front), then x/|w| against x'/|w'| as x·|w'| against x'·|w|, then
+// y likewise. For two points of Omega the seed gives no normalization; here they are
+// ordered by x then y after scaling by max(|x|, |y|), compared the same way by
+// cross-multiplication.
 Sign compare_wxy(const ExactPoint& a, const ExactPoint& b) {
-  if (t2::sign_of(a.w()) != t2::sign_of(b.w())) return t2::sign_of(Integer(t2::sign_of(a.w()) - t2::sign_of(b.w())));
+  if (t2::sign_of(a.w()) != t2::sign_of(b.w()))
+    return t2::sign_of(Integer(t2::sign_of(a.w()) - t2::sign_of(b.w())));
   Integer sa = abs(a.w()), sb = abs(b.w());
   if (sa == 0) {
     sa = std::max(abs(a.x()), abs(a.y()));
     sb = std::max(abs(b.x()), abs(b.y()));
   }
-  if (const Sign s = t2::sign_of(Integer(a.x() * sb - b.x() * sa)); s != t2::ZERO) return s;
+  if (const Sign s = t2::sign_of(Integer(a.x() * sb - b.x() * sa)); s != t2::ZERO)
+    return s;
   return t2::sign_of(Integer(a.y() * sb - b.y() * sa));
 }
 //< lex-order
@@ -202,9 +209,12 @@ Sign compare_wxy(const ExactPoint& a, const ExactPoint& b) {
 void lexicographic() {
   std::cout << "== 4. Lexicographic wxy order\n";
   //> lex-demo
-  std::vector<ExactPoint> pts = {ExactPoint(2, 2, 0),  ExactPoint(1, 1, 5), ExactPoint(-1, 3, 0), ExactPoint(0, 1, 1),
-                                 ExactPoint(-3, -3, 3), ExactPoint(0, -2, 0), ExactPoint(4, 4, -4), ExactPoint(1, 1, 1)};
-  std::stable_sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return t2::less_wxy(a, b); });
+  std::vector<ExactPoint> pts = {ExactPoint(2, 2, 0),   ExactPoint(1, 1, 5),
+                                 ExactPoint(-1, 3, 0),  ExactPoint(0, 1, 1),
+                                 ExactPoint(-3, -3, 3), ExactPoint(0, -2, 0),
+                                 ExactPoint(4, 4, -4),  ExactPoint(1, 1, 1)};
+  std::stable_sort(pts.begin(), pts.end(),
+                   [](const auto& a, const auto& b) { return t2::less_wxy(a, b); });
   //< lex-demo
   std::cout << "sorted:";
   for (const auto& p : pts) std::cout << ' ' << str(p);
@@ -234,8 +244,10 @@ namespace sketch {
 // [sign(aw bw)(aw bw)², (ax bw - bx aw)² + (ay bw - by aw)²]. Front-back pairs get a
 // negative weight: a distance "beyond infinity".
 t2::ExactT1 squared_distance(const ExactPoint& a, const ExactPoint& b) {
-  if (a.w() == 0 || b.w() == 0) throw t2::Undefined("squared_distance(a, b) needs two proper points (w != 0)");
-  const Integer ww = a.w() * b.w(), dx = a.x() * b.w() - b.x() * a.w(), dy = a.y() * b.w() - b.y() * a.w();
+  if (a.w() == 0 || b.w() == 0)
+    throw t2::Undefined("squared_distance(a, b) needs two proper points (w != 0)");
+  const Integer ww = a.w() * b.w(), dx = a.x() * b.w() - b.x() * a.w(),
+                dy = a.y() * b.w() - b.y() * a.w();
   return t2::ExactT1(ww > 0 ? Integer(ww * ww) : Integer(-ww * ww), dx * dx + dy * dy);
 }
 //< squared-distance
@@ -248,7 +260,8 @@ namespace sketch {
 // r⊥ = a ∨ n; then r⊥ ⋄ b > 0 means a is nearer. Returns NEGATIVE when a is nearer.
 Sign compare_to_infinite(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
   const t2::ExactLine r = t2::join(a, c);
-  const ExactPoint n(0, r.X(), r.Y());  // the normal direction of r, towards its positive side
+  const ExactPoint n(0, r.X(),
+                     r.Y());  // the normal direction of r, towards its positive side
   const t2::ExactLine r_perp = t2::join(a, n);
   return -t2::side(r_perp, b);
 }
@@ -257,9 +270,10 @@ Sign compare_to_infinite(const ExactPoint& a, const ExactPoint& b, const ExactPo
 
 namespace sketch {
 //> angle-test
-// Which of the points at infinity b, c is nearer to the proper point a? Compare the angles
-// a·o·b and a·o·c at the origin o of space: cos(aob) = (a·b)/(|a||b|). Squared with signs,
-// (a·b)|c| > (a·c)|b| becomes a polynomial test. Returns NEGATIVE when b is nearer.
+// Which of the points at infinity b, c is nearer to the proper point a? Compare the
+// angles a·o·b and a·o·c at the origin o of space: cos(aob) = (a·b)/(|a||b|). Squared
+// with signs, (a·b)|c| > (a·c)|b| becomes a polynomial test. Returns NEGATIVE when b is
+// nearer.
 Sign compare_infinite_to(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
   const Integer ab = a.w() * b.w() + a.x() * b.x() + a.y() * b.y();
   const Integer ac = a.w() * c.w() + a.x() * c.x() + a.y() * c.y();
@@ -326,8 +340,10 @@ void distances() {
   std::cout << "angle rule against the limit a·c^ - a·b^, " << cases << " cases: sketch right on " << sketch_ok
             << ", t2::compare_distance right on " << library_ok << "\n";
   //> two-notions
-  const ExactPoint u = ExactPoint::cartesian(10, 0), v = ExactPoint::cartesian(21, 200), dir(0, 1, 0);
-  const Sign sweep = t2::compare_distance(u, v, dir);  // the sweep rule: the Euclidean limit
+  const ExactPoint u = ExactPoint::cartesian(10, 0), v = ExactPoint::cartesian(21, 200),
+                   dir(0, 1, 0);
+  const Sign sweep =
+      t2::compare_distance(u, v, dir);  // the sweep rule: the Euclidean limit
   const Sign angle = sketch::compare_infinite_to(dir, u, v);  // the angle rule, misapplied
   //< two-notions
   std::cout << "u = (10, 0), v = (21, 200), c = [0,1,0]: the sweep rule says " << (sweep < 0 ? "u" : "v")
@@ -341,12 +357,14 @@ namespace sketch {
 //> midpoints
 // The naive homogeneous midpoint, straight from the Cartesian formula.
 ExactPoint naive_midpoint(const ExactPoint& p, const ExactPoint& q) {
-  return ExactPoint(2 * p.w() * q.w(), p.x() * q.w() + q.x() * p.w(), p.y() * q.w() + q.y() * p.w());
+  return ExactPoint(2 * p.w() * q.w(), p.x() * q.w() + q.x() * p.w(),
+                    p.y() * q.w() + q.y() * p.w());
 }
 // Seed 000, §4.3.2 (after de Rezende & Stolfi): weight each point by the other's |w|.
 ExactPoint seed_midpoint(const ExactPoint& p, const ExactPoint& q) {
   const Integer ap = abs(p.w()), aq = abs(q.w());
-  return ExactPoint(aq * p.w() + ap * q.w(), aq * p.x() + ap * q.x(), aq * p.y() + ap * q.y());
+  return ExactPoint(aq * p.w() + ap * q.w(), aq * p.x() + ap * q.x(),
+                    aq * p.y() + ap * q.y());
 }
 //< midpoints
 }  // namespace sketch
@@ -399,10 +417,13 @@ Sign algorithm_1(const ExactPoint& p, const ExactPoint& q) {
 
 namespace sketch {
 //> compare-angle
-// Corrected: the angle of a direction in [0, 2π) counter-clockwise from d = [0,1,0]. First
-// the half it lies in (upper: y > 0, or y = 0 and x > 0), then the orientation inside a half.
+// Corrected: the angle of a direction in [0, 2π) counter-clockwise from d = [0,1,0].
+// First the half it lies in (upper: y > 0, or y = 0 and x > 0), then the orientation
+// inside a half.
 Sign compare_angle(const ExactPoint& p, const ExactPoint& q) {
-  auto half = [](const ExactPoint& v) { return (v.y() > 0 || (v.y() == 0 && v.x() > 0)) ? 0 : 1; };
+  auto half = [](const ExactPoint& v) {
+    return (v.y() > 0 || (v.y() == 0 && v.x() > 0)) ? 0 : 1;
+  };
   if (half(p) != half(q)) return half(p) < half(q) ? t2::NEGATIVE : t2::POSITIVE;
   return t2::orient(p, ExactPoint(1, 0, 0), q);  // = sign of sin(angle p - angle q)
 }

@@ -27,8 +27,8 @@ namespace {
 
 //> float-lines
 // Cartesian points and lines a·x + b·y + c = 0 in single precision, the way a textbook
-// library stores them. line() is the cross product of [x, y, 1] triples; intersect() solves
-// the 2×2 system by Cramer's rule and divides, so its result is rounded.
+// library stores them. line() is the cross product of [x, y, 1] triples; intersect()
+// solves the 2×2 system by Cramer's rule and divides, so its result is rounded.
 struct PointF { float x, y; };
 struct LineF { float a, b, c; };
 
@@ -198,7 +198,9 @@ void tolerances() {
   auto det = [](double px, double py, double qx, double qy, double rx, double ry) {
     return (qx - px) * (ry - py) - (qy - py) * (rx - px);
   };
-  auto collinear_eps = [&](auto p, auto q, auto r) { return std::fabs(det(p[0], p[1], q[0], q[1], r[0], r[1])) <= eps; };
+  auto collinear_eps = [&](auto p, auto q, auto r) {
+    return std::fabs(det(p[0], p[1], q[0], q[1], r[0], r[1])) <= eps;
+  };
   const std::array<double, 2> p{0, 0}, q{1, 0}, r{1e6, 5e-10}, s{-1e6, 5e-10};
   //< eps-collinear
   std::cout << std::boolalpha << "collinear_eps(p, q, r) = " << collinear_eps(p, q, r)
@@ -228,7 +230,8 @@ void exact_integers() {
   std::cout << "to_exact([1, 0.1, 0.2]) = " << t2::to_string(e) << "\n";
   std::cout << "so 0.1 is really " << t2::to_string(e.x()) << "/" << t2::to_string(e.w()) << "\n";
   //> not-collinear
-  const t2::Point a(1, 0.1, 0.9), b(1, 0.2, 0.8), c(1, 0.3, 0.7);  // "on the line x + y = 1"
+  // "On the line x + y = 1":
+  const t2::Point a(1, 0.1, 0.9), b(1, 0.2, 0.8), c(1, 0.3, 0.7);
   //< not-collinear
   const t2::Rational det = t2::to_rational(0.2) * t2::to_rational(0.7) - t2::to_rational(0.8) * t2::to_rational(0.3) -
                            (t2::to_rational(0.1) * t2::to_rational(0.7) - t2::to_rational(0.9) * t2::to_rational(0.3)) +
@@ -263,7 +266,8 @@ void filter_costs(const SignMap&) {
   //> filter-random
   const Count random = counted([&] {
     for (int i = 0; i < n; ++i)
-      (void)t2::orient(t2::Point(uniform(g), uniform(g), uniform(g)), t2::Point(uniform(g), uniform(g), uniform(g)),
+      (void)t2::orient(t2::Point(uniform(g), uniform(g), uniform(g)),
+                       t2::Point(uniform(g), uniform(g), uniform(g)),
                        t2::Point(uniform(g), uniform(g), uniform(g)));
   });
   //< filter-random
@@ -273,7 +277,8 @@ void filter_costs(const SignMap&) {
   // line pq by at most a few units in the last place.
   const Count near = counted([&] {
     for (int i = 0; i < n; ++i) {
-      const double px = 100 * uniform(g), py = 100 * uniform(g), qx = 100 * uniform(g), qy = 100 * uniform(g);
+      const double px = 100 * uniform(g), py = 100 * uniform(g), qx = 100 * uniform(g),
+                   qy = 100 * uniform(g);
       const double s = 0.5 * (uniform(g) + 1);
       (void)t2::orient(t2::Point::cartesian(px, py), t2::Point::cartesian(qx, qy),
                        t2::Point::cartesian(px + s * (qx - px), py + s * (qy - py)));
@@ -286,8 +291,9 @@ void filter_costs(const SignMap&) {
     for (int i = 0; i < n; ++i) {
       auto small = [&] { return std::floor(1000 * uniform(g)); };
       const double a = small(), b = small();
-      const t2::Point p(small(), small(), 1000 + small()), q(small(), small(), 3000 + small());
-      (void)t2::orient(p, q, t2::Point(a * p.w() + b * q.w(), a * p.x() + b * q.x(), a * p.y() + b * q.y()));
+      const t2::Point p(small(), small(), 1000 + small()),
+          q(small(), small(), 3000 + small());
+      (void)t2::orient(p, q, t2::mix(a, p, b, q));
     }
   });
   //< filter-degenerate
@@ -297,13 +303,14 @@ void filter_costs(const SignMap&) {
       auto small = [&] { return std::floor(1000 * uniform(g)) / 1024; };
       const double a = std::floor(1000 * uniform(g)), b = std::floor(1000 * uniform(g));
       const t2::Point p(small(), small(), 1 + small()), q(small(), small(), 3 + small());
-      (void)t2::orient(p, q, t2::Point(a * p.w() + b * q.w(), a * p.x() + b * q.x(), a * p.y() + b * q.y()));
+      (void)t2::orient(p, q, t2::mix(a, p, b, q));
     }
   });
   // One evaluation of the fast path, opened up: the value and the bound, by the library's code.
   auto show = [](const char* name, const t2::Point& p, const t2::Point& q, const t2::Point& r) {
     //> filter-worked
-    const auto [value, bound] = t2::detail::orient2_filter(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
+    const auto [value, bound] =
+        t2::detail::orient2_filter(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
     //< filter-worked
     std::printf("%-20s value = %-24.17g bound = %-10.3g  %s\n", name, value, bound,
                 std::fabs(value) > bound ? "certain" : "uncertain: exact stage");
@@ -322,8 +329,9 @@ void filter_costs(const SignMap&) {
     std::printf("two_prod(0.1, 0.1)   x = %.17g  y = %.17g\n", x, y);
     const double px = 0.5 + 3 * 0x1p-53, py = 0.5 + 200 * 0x1p-53;  // the grid cell (3, 200)
     const auto det = diff(12, px) * diff(24, py) - diff(12, py) * diff(24, px);
-    std::printf("grid cell (3, 200)   det = %.17g (rounded sum of %d components), sign %+d\n", det.estimate(), det.n,
-                static_cast<int>(det.sign()));
+    std::printf(
+        "grid cell (3, 200)   det = %.17g (rounded sum of %d components), sign %+d\n",
+        det.estimate(), det.n, static_cast<int>(det.sign()));
     //< expansion-worked
     for (int i = 0; i < det.n; ++i) std::printf("  component %d: %a\n", i, det.c[i]);
   }

@@ -63,13 +63,17 @@ void intersection() {
   std::cout << "== 2. Segment intersection from orientations\n";
   //> four-orientations
   const ExactPoint a = P(-2, 0), b = P(2, 0), c = P(0, -2), d = P(0, 2);
-  std::cout << "orient(a,b,c) = " << sym(t2::orient(a, b, c)) << ", orient(a,b,d) = " << sym(t2::orient(a, b, d))
-            << ", orient(c,d,a) = " << sym(t2::orient(c, d, a)) << ", orient(c,d,b) = " << sym(t2::orient(c, d, b))
+  std::cout << "orient(a,b,c) = " << sym(t2::orient(a, b, c))
+            << ", orient(a,b,d) = " << sym(t2::orient(a, b, d))
+            << ", orient(c,d,a) = " << sym(t2::orient(c, d, a))
+            << ", orient(c,d,b) = " << sym(t2::orient(c, d, b))
             << "  -> ab and cd cross: " << t2::segments_intersect(a, b, c, d) << "\n";
   // The same four signs for ab and the antipode of cd, a segment on the back side:
   const ExactPoint nc = t2::antipode(c), nd = t2::antipode(d);
-  std::cout << "orient(a,b,~c) = " << sym(t2::orient(a, b, nc)) << ", orient(a,b,~d) = " << sym(t2::orient(a, b, nd))
-            << ", orient(~c,~d,a) = " << sym(t2::orient(nc, nd, a)) << ", orient(~c,~d,b) = " << sym(t2::orient(nc, nd, b))
+  std::cout << "orient(a,b,~c) = " << sym(t2::orient(a, b, nc))
+            << ", orient(a,b,~d) = " << sym(t2::orient(a, b, nd))
+            << ", orient(~c,~d,a) = " << sym(t2::orient(nc, nd, a))
+            << ", orient(~c,~d,b) = " << sym(t2::orient(nc, nd, b))
             << "  -> ab and ~c~d meet: " << t2::segments_intersect(a, b, nc, nd) << "\n";
   //< four-orientations
   std::cout << "fifth sign: orient(a,b,c) = " << sym(t2::orient(a, b, c)) << " vs -orient(c,d,a) = "
@@ -90,7 +94,8 @@ void area() {
   std::cout << "== 3. Signed area\n";
   //> area-demo
   const ExactPolygon& poly = example_polygon();
-  std::cout << "2 * area = " << t2::signed_area(poly).get_str() << ", orientation = " << sym(t2::orientation(poly)) << "\n";
+  std::cout << "2 * area = " << t2::signed_area(poly).get_str()
+            << ", orientation = " << sym(t2::orientation(poly)) << "\n";
   ExactPolygon reversed(poly.rbegin(), poly.rend()), back;
   for (const auto& p : poly) back.push_back(t2::antipode(p));
   std::cout << "reversed: " << t2::signed_area(reversed).get_str() << ", on the back side: "
@@ -138,17 +143,20 @@ void point_in_polygon() {
   std::cout << "== 4. Point in polygon\n";
   const ExactPolygon& poly = example_polygon();
   //> pip-demo
-  const ExactPoint queries[] = {P(1, 1), P(3, 3), P(5, 0), P(8, 0), P(3, 2), t2::antipode(P(1, 1))};
+  const ExactPoint queries[] = {P(1, 1), P(3, 3), P(5, 0),
+                                P(8, 0), P(3, 2), t2::antipode(P(1, 1))};
   for (const ExactPoint& q : queries)
-    std::cout << "q = " << str(q) << ": ray casting " << (q.w() > 0 ? sym(t2::locate_by_ray_casting(poly, q)) : "n/a")
+    std::cout << "q = " << str(q) << ": ray casting "
+              << (q.w() > 0 ? sym(t2::locate_by_ray_casting(poly, q)) : "n/a")
               << ", locate " << sym(t2::locate(poly, q)) << "\n";
   //< pip-demo
   // Winding numbers of a self-intersecting polygon: the pentagram.
   //> winding-demo
   const ExactPolygon star{P(0, 10), P(-6, -8), P(10, 3), P(-10, 3), P(6, -8)};
   for (const ExactPoint& q : {P(0, 0), P(0, 5), P(20, 0)})
-    std::cout << "pentagram, q = " << cart(q) << ": winding number " << t2::winding_number(star, q)
-              << ", ray casting " << sym(t2::locate_by_ray_casting(star, q)) << "\n";
+    std::cout << "pentagram, q = " << cart(q) << ": winding number "
+              << t2::winding_number(star, q) << ", ray casting "
+              << sym(t2::locate_by_ray_casting(star, q)) << "\n";
   //< winding-demo
   // The seed's algorithm, literally, against t2::locate on every point of a half-integer grid.
   int total = 0, wrong = 0, undefined = 0;
@@ -183,7 +191,8 @@ void point_in_polygon() {
   for (const auto& p : image) std::cout << str(p) << " ";
   std::cout << "\n";
   for (const ExactPoint& q : {P(1, 1), P(3, 3), P(5, 1)})
-    std::cout << "locate(image, map(" << cart(q) << ")) = " << sym(t2::locate(image, map(q)))
+    std::cout << "locate(image, map(" << cart(q)
+              << ")) = " << sym(t2::locate(image, map(q)))
               << "   winding = " << t2::winding_number(image, map(q)) << "\n";
   //< t2-polygon
   std::cout << "\n";
@@ -199,10 +208,12 @@ void ears() {
   t2::Rational sum = 0;
   for (const auto& t : t2::ear_clipping(poly)) {
     const ExactPolygon tri{poly[t[0]], poly[t[1]], poly[t[2]]};
-    std::cout << "(" << t[0] << ", " << t[1] << ", " << t[2] << ") 2*area " << t2::signed_area(tri).get_str() << "\n";
+    std::cout << "(" << t[0] << ", " << t[1] << ", " << t[2] << ") 2*area "
+              << t2::signed_area(tri).get_str() << "\n";
     sum += t2::signed_area(tri);
   }
-  std::cout << "sum " << sum.get_str() << " = 2*area of the polygon " << t2::signed_area(poly).get_str() << "\n";
+  std::cout << "sum " << sum.get_str() << " = 2*area of the polygon "
+            << t2::signed_area(poly).get_str() << "\n";
   //< ear-demo
   //> ear-complement
   // A small square traversed clockwise: its positive side is everything outside the square.
@@ -219,9 +230,10 @@ void ears() {
 // 6. Convexity in T².
 
 //> hull-certificates
-// The two certificates of the hemisphere theorem. A set lies in the open hemisphere of l when
-// every point is strictly on the positive side of l; a set has no convex hull when some
-// coefficients λ_i >= 0, not all zero, make the vector sum Σ λ_i a_i the zero vector.
+// The two certificates of the hemisphere theorem. A set lies in the open hemisphere of l
+// when every point is strictly on the positive side of l; a set has no convex hull when
+// some coefficients λ_i >= 0, not all zero, make the vector sum Σ λ_i a_i the zero
+// vector.
 bool in_open_hemisphere(const t2::ExactLine& l, const ExactPolygon& A) {
   for (const ExactPoint& a : A)
     if (t2::side(l, a) != t2::POSITIVE) return false;
@@ -283,8 +295,8 @@ void convexity() {
   const ExactPolygon A = set_A(), B = set_B();
   const ExactPolygon C{ExactPoint(2, 0, 0), ExactPoint(-1, 1, 0), ExactPoint(-1, -1, 0)};
   const t2::ExactLine l(2, 0, 1);  // 2w + y > 0
-  std::cout << "A = " << list(A) << ": all on the positive side of " << t2::to_string(l) << ": "
-            << in_open_hemisphere(l, A) << "\n";
+  std::cout << "A = " << list(A) << ": all on the positive side of " << t2::to_string(l)
+            << ": " << in_open_hemisphere(l, A) << "\n";
   std::cout << "B = " << list(B) << ": 1 b0 + 1 b1 + 1 b2 + 3 b3 = [0, 0, 0]: "
             << sums_to_zero({1, 1, 1, 3}, B) << "\n";
   std::cout << "C = " << list(C) << ": 1 c0 + 1 c1 + 1 c2 = [0, 0, 0]: "

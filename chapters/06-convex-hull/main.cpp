@@ -58,7 +58,8 @@ void every_algorithm() {
   const std::vector<std::size_t> ref = t2::convex_hull(A, HullAlgorithm::merge);
   for (HullAlgorithm a : kAlgorithms) {
     const std::vector<std::size_t> h = t2::convex_hull(A, a);
-    std::cout << t2::name(a) << ":" << indices(h) << (same_cycle(h, ref) ? "" : "   DIFFERS") << "\n";
+    std::cout << t2::name(a) << ":" << indices(h)
+              << (same_cycle(h, ref) ? "" : "   DIFFERS") << "\n";
   }
   //< hull-demo
   for (HullAlgorithm a : kAlgorithms) require(same_cycle(t2::convex_hull(A, a), ref), "algorithms agree");
@@ -71,11 +72,15 @@ void every_algorithm() {
 void degenerate() {
   std::cout << "== degenerate input\n";
   //> degenerate
-  const std::vector<Point> D{Point::cartesian(0, 0), Point::cartesian(4, 0), Point::cartesian(2, 0),  // collinear
-                             Point(2, 8, 0),  // (4, 0) again, scaled by 2
-                             Point::cartesian(4, 4), Point::cartesian(0, 4), Point::cartesian(2, 2)};
-  std::cout << "square with an edge point, a repeated corner and a centre:" << indices(t2::convex_hull(D)) << "\n";
-  const std::vector<Point> L{Point::cartesian(1, 1), Point::cartesian(3, 2), Point(0, 2, 1), Point(-1, 3, 1)};
+  const std::vector<Point> D{Point::cartesian(0, 0), Point::cartesian(4, 0),
+                             Point::cartesian(2, 0),  // collinear
+                             Point(2, 8, 0),          // (4, 0) again, scaled by 2
+                             Point::cartesian(4, 4), Point::cartesian(0, 4),
+                             Point::cartesian(2, 2)};
+  std::cout << "square with an edge point, a repeated corner and a centre:"
+            << indices(t2::convex_hull(D)) << "\n";
+  const std::vector<Point> L{Point::cartesian(1, 1), Point::cartesian(3, 2),
+                             Point(0, 2, 1), Point(-1, 3, 1)};
   std::cout << "(1,1), (3,2), their line's point at infinity and the back point [-1, 3, 1]:"
             << indices(t2::convex_hull(L)) << "\n";
   try {
@@ -91,9 +96,12 @@ void no_hull() {
   std::cout << "== sets without a hull\n";
   //> no-hull
   const std::vector<std::vector<Point>> sets{
-      {Point::cartesian(0, 0), Point::cartesian(2, 1), Point(-1, -2, -1)},            // p1 and p2 antipodal
-      {Point(0, 1, 0), Point(0, -1, 2), Point(0, -1, -2)},                           // three directions all round Ω
-      {Point::cartesian(-2, -1), Point::cartesian(2, -1), Point::cartesian(0, 2), Point(-1, 0, 0)},  // ¬p3 in the triangle
+      {Point::cartesian(0, 0), Point::cartesian(2, 1),
+       Point(-1, -2, -1)},  // p1 and p2 antipodal
+      {Point(0, 1, 0), Point(0, -1, 2),
+       Point(0, -1, -2)},  // three directions all round Ω
+      {Point::cartesian(-2, -1), Point::cartesian(2, -1), Point::cartesian(0, 2),
+       Point(-1, 0, 0)},  // ¬p3 in the triangle
   };
   for (const auto& S : sets) {
     try {
@@ -115,7 +123,10 @@ void lower_bound() {
   std::vector<Point> P;
   for (double v : x) P.push_back(Point::cartesian(v, v * v));  // on the parabola y = x²
   std::vector<std::size_t> h = t2::convex_hull(P);             // every point is a vertex
-  std::rotate(h.begin(), std::min_element(h.begin(), h.end(), [&](auto a, auto b) { return x[a] < x[b]; }), h.end());
+  std::rotate(
+      h.begin(),
+      std::min_element(h.begin(), h.end(), [&](auto a, auto b) { return x[a] < x[b]; }),
+      h.end());
   std::cout << "sorted:";
   for (std::size_t i : h) std::cout << " " << x[i];
   std::cout << "\n";

@@ -1,6 +1,7 @@
 // `t2 book check` and `t2 book sync` over every chapter of a checkout.
 #include <unistd.h>
 
+#include <algorithm>
 #include <string>
 
 #include "book_ast.hpp"
@@ -18,6 +19,37 @@ std::vector<std::string> chapter_markdown_files(const fs::path& root) {
 }
 
 namespace {
+
+// Listings fit the page of the HTML book: no line of a code block is wider than this (quoted
+// program output, ```text, is the program's and is exempt). Columns are characters (UTF-8 code
+// points), as the monospace font of the book lays them out.
+constexpr std::size_t kMaxListingColumns = 90;
+
+std::size_t columns(const std::string& line) {
+  std::size_t n = 0;
+  for (const unsigned char c : line) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+// The code blocks of doc as pandoc reads them (indented, fenced, with attributes), line by line.
+std::vector<Problem> check_listing_widths(const std::string& rel, const Document& doc) {
+  std::vector<Problem> ps;
+  for (const auto& b : doc.code_blocks) {
+    if (std::find(b.classes.begin(), b.classes.end(), "text") != b.classes.end()) continue;
+    std::size_t start = 0;
+    for (int k = 0; start <= b.code.size(); ++k) {
+      const std::size_t end = std::min(b.code.find('\n', start), b.code.size());
+      const std::size_t w = columns(b.code.substr(start, end - start));
+      if (w > kMaxListingColumns)
+        ps.push_back({rel + ":" + std::to_string(b.line + k),
+                      "a line of a code block is " + std::to_string(w) + " columns wide, over " +
+                          std::to_string(kMaxListingColumns) +
+                          ": it scrolls sideways in the HTML book (wrap it in the source, then `t2 book sync`)"});
+      start = end + 1;
+    }
+  }
+  return ps;
+}
 
 // The quoted output of chapter c (its ```text blocks) against what its program prints.
 std::vector<Problem> check_program_output(const Chapter& c, const std::string& rel, const Document& doc,
@@ -62,6 +94,7 @@ std::vector<Problem> check_book(const fs::path& root, int* listings, const fs::p
     if (text.rfind("# ", 0) != 0) ps.push_back({rel + ":1", "the first line must be the chapter title, '# Title'"});
     const Document doc = parse_markdown(text, rel);
     add(check_links(root, rel, doc));
+    add(check_listing_widths(rel, doc));
     if (!programs.empty()) add(check_program_output(c, rel, doc, programs, outputs));
   }
   return ps;

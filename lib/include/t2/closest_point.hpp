@@ -27,12 +27,15 @@ BasicPoint<T> closest_point_on_segment(const BasicPoint<T>& a, const BasicPoint<
     throw Undefined(
         "closest_point_on_segment(a, b, q) needs a, b, q proper and on one side of T2 (distances across the line at infinity are infinite)");
   //> closest-polys
-  // U = w_a·(x_b, y_b) − w_b·(x_a, y_a) ~ B − A;   V = w_a·(x_q, y_q) − w_q·(x_a, y_a) ~ Q − A
+  // U = w_a·(x_b, y_b) − w_b·(x_a, y_a) ~ B − A;
+  // V = w_a·(x_q, y_q) − w_q·(x_a, y_a) ~ Q − A
   auto N = [](const auto& a, const auto& b, const auto& q) {
-    return b.w * ((a.w * q.x - q.w * a.x) * (a.w * b.x - b.w * a.x) + (a.w * q.y - q.w * a.y) * (a.w * b.y - b.w * a.y));
+    return b.w * ((a.w * q.x - q.w * a.x) * (a.w * b.x - b.w * a.x) +
+                  (a.w * q.y - q.w * a.y) * (a.w * b.y - b.w * a.y));
   };
   auto D = [](const auto& a, const auto& b, const auto& q) {
-    return q.w * ((a.w * b.x - b.w * a.x) * (a.w * b.x - b.w * a.x) + (a.w * b.y - b.w * a.y) * (a.w * b.y - b.w * a.y));
+    return q.w * ((a.w * b.x - b.w * a.x) * (a.w * b.x - b.w * a.x) +
+                  (a.w * b.y - b.w * a.y) * (a.w * b.y - b.w * a.y));
   };
   //< closest-polys
   auto DminusN = [&](const auto& u, const auto& v, const auto& r) { return D(u, v, r) - N(u, v, r); };

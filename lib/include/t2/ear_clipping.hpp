@@ -38,12 +38,14 @@ std::vector<IndexTriangle> ear_clipping(const BasicPolygon<T>& P) {
     next[i] = (i + 1) % n;
   }
   //> ear-test
-  // v is an ear when it turns like P and no other remaining vertex is in the closed triangle.
+  // v is an ear when it turns like P and no other remaining vertex is in the closed
+  // triangle.
   auto is_ear = [&](std::size_t v) {
     const std::size_t u = prev[v], w = next[v];
     if (orient(P[u], P[v], P[w]) != o) return false;
     for (std::size_t j = next[w]; j != u; j = next[j])
-      if (orient(P[u], P[v], P[j]) != -o && orient(P[v], P[w], P[j]) != -o && orient(P[w], P[u], P[j]) != -o)
+      if (orient(P[u], P[v], P[j]) != -o && orient(P[v], P[w], P[j]) != -o &&
+          orient(P[w], P[u], P[j]) != -o)
         return false;  // P[j] inside or on the triangle uvw
     return true;
   };

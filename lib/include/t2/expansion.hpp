@@ -55,7 +55,7 @@ inline void fast_two_sum(double a, double b, double& x, double& y) {
 }
 
 //> two-prod
-/// x + y = a·b exactly, x = fl(a·b), if a·b − x does not underflow (see the file comment).
+/// x + y = a·b exactly, x = fl(a·b), if a·b − x does not underflow (file comment).
 inline void two_prod(double a, double b, double& x, double& y) {
   x = a * b;
   y = std::fma(a, b, -x);  // one rounding of an exact value that is a double: exact

@@ -94,9 +94,11 @@ inline Sign orient_dyadic(double a, double b, double c, double d, double e, doub
   if (a1 == 0 && b1 == 0 && c1 == 0 && d1 == 0) return e0.sign();
   const double h = e0.approx();
   const double r1 = (a * d1 + a1 * d) - (b * c1 + b1 * c);
-  const double t = (std::fabs(a * d1) + std::fabs(a1 * d)) + (std::fabs(b * c1) + std::fabs(b1 * c));
+  const double t =
+      (std::fabs(a * d1) + std::fabs(a1 * d)) + (std::fabs(b * c1) + std::fabs(b1 * c));
   const double s = e0.estimate() + r1;
-  const double bound = (7 * kUnitRoundoff * std::fabs(h) + 5 * kUnitRoundoff * t) + 0x1p-1000;
+  const double bound =
+      (7 * kUnitRoundoff * std::fabs(h) + 5 * kUnitRoundoff * t) + 0x1p-1000;
   if (s > bound) return POSITIVE;
   if (-s > bound) return NEGATIVE;
   const auto A = diff(qx, px), B = diff(qy, py), C = diff(rx, px), D = diff(ry, py);
@@ -108,21 +110,23 @@ inline Sign orient_dyadic(double a, double b, double c, double d, double e, doub
 /// What a fast path computes: the rounded value of the polynomial and its error bound.
 struct Filtered2 {
   double value;  ///< the polynomial evaluated in doubles
-  double bound;  ///< |value − exact| < bound when no overflow occurred (see the file comment)
+  double bound;  ///< |value − exact| < bound when no overflow occurred (file comment)
 };
 
-/// The fast path for three Cartesian points: Δ in doubles and the bound of the file comment.
-inline Filtered2 orient2_filter(double px, double py, double qx, double qy, double rx, double ry) {
+/// The fast path for three Cartesian points: Δ in doubles and the file comment's bound.
+inline Filtered2 orient2_filter(double px, double py, double qx, double qy, double rx,
+                                double ry) {
   const double a = qx - px, b = qy - py, c = rx - px, d = ry - py;
   const double l = a * d, r = b * c;
   return {l - r, kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000};
 }
 
-/// Δ of three Cartesian points (px, py), (qx, qy), (rx, ry): exact (see the file comment).
+/// Δ of three Cartesian points (px, py), (qx, qy), (rx, ry): exact (file comment).
 inline Sign orient2(double px, double py, double qx, double qy, double rx, double ry) {
   count_call();
   const auto [det, bound] = orient2_filter(px, py, qx, qy, rx, ry);
-  const int sign = (det > bound) - (-det > bound);  // no branch on the (random) sign itself
+  // No branch on the (random) sign itself.
+  const int sign = (det > bound) - (-det > bound);
   if (sign != 0) [[likely]] return static_cast<Sign>(sign);
   return orient2_exact(px, py, qx, qy, rx, ry);
 }

@@ -166,7 +166,8 @@ Sign locate(const BasicPolygon<T>& P, const BasicPoint<T>& q) {
   const Sign t = orient(p(n - 1), p0, p(1));  // +1: p0 is a convex vertex, -1: reflex
   const Sign b = oq(p(n - 1), p0);         // side of p(n-1)∨p0 the walk enters
   if (s * b == NEGATIVE) {
-    if (t == ZERO) throw Undefined("locate(P, q) needs a simple polygon (P doubles back at a vertex)");
+    if (t == ZERO)
+      throw Undefined("locate(P, q) needs a simple polygon (P doubles back at a vertex)");
     s = -t;  // between the two edge lines: inside the wedge iff p0 is reflex
   }
   //< algorithm2-start
@@ -179,7 +180,8 @@ Sign locate(const BasicPolygon<T>& P, const BasicPoint<T>& q) {
     if (Lc == ZERO || Ld == ZERO || Lc == Ld) continue;  // c or d = ¬p0, or no crossing
     const Sign ka = orient(c, d, p0);
     const Sign kb = oq(c, d);  // Δ(c, d, q_ε) = Δ(q_ε, c, d)
-    if (ka * kb == NEGATIVE && Lc == -ka) s = -s;  // four orientations, plus the fifth of T²
+    if (ka * kb == NEGATIVE && Lc == -ka)
+      s = -s;  // four orientations, plus the fifth of T²
   }
   //< algorithm2-count
   return s;

@@ -97,7 +97,8 @@ namespace detail {
 /// The exact test behind `on_segment` (see there).
 //> on-segment
 template <class T>
-bool on_segment_impl(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>& r) {
+bool on_segment_impl(const BasicPoint<T>& p, const BasicPoint<T>& q,
+                     const BasicPoint<T>& r) {
   if (p == antipode(q)) throw Undefined(detail::kAntipodalSegment);
   if (orient(p, q, r) != ZERO) return false;
   if (p == q) return r == p;  // the one-point segment

@@ -33,22 +33,26 @@ std::vector<std::size_t> graham(std::span<const Point> P, const std::vector<std:
   const Point& O = P[o];
   std::sort(rest.begin(), rest.end(), [&](std::size_t a, std::size_t b) {
     const Sign s = K::orient(O, P[a], P[b]);
-    return s != ZERO ? s > 0 : order.farther(O, P[a], P[b]);  // by angle, then nearest first
+    return s != ZERO ? s > 0
+                     : order.farther(O, P[a], P[b]);  // by angle, then nearest first
   });
   auto last = rest.end();  // the last ray from o: farthest first
-  while (last != rest.begin() && K::orient(O, P[*(last - 1)], P[rest.back()]) == ZERO) --last;
+  while (last != rest.begin() && K::orient(O, P[*(last - 1)], P[rest.back()]) == ZERO)
+    --last;
   if (last != rest.begin()) std::reverse(last, rest.end());
   std::vector<std::size_t> stack{o};
   for (std::size_t i : rest) {
     trace(HullStep::consider, i, stack);
-    while (stack.size() >= 2 && K::orient(P[stack[stack.size() - 2]], P[stack.back()], P[i]) <= 0) {
+    while (stack.size() >= 2 &&
+           K::orient(P[stack[stack.size() - 2]], P[stack.back()], P[i]) <= 0) {
       trace(HullStep::pop, stack.back(), stack);
       stack.pop_back();
     }
     stack.push_back(i);
     trace(HullStep::push, i, stack);
   }
-  while (stack.size() >= 3 && K::orient(P[stack[stack.size() - 2]], P[stack.back()], O) <= 0) {
+  while (stack.size() >= 3 &&
+         K::orient(P[stack[stack.size() - 2]], P[stack.back()], O) <= 0) {
     trace(HullStep::pop, stack.back(), stack);  // inside the closing edge
     stack.pop_back();
   }

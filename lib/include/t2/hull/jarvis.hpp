@@ -39,7 +39,8 @@ std::vector<std::size_t> jarvis(std::span<const Point> P, const std::vector<std:
         continue;
       }
       const Sign s = K::orient(P[u], P[q], P[i]);
-      if (s < 0 || (s == 0 && order.farther(P[u], P[q], P[i]))) q = i;  // i right of u → q, or beyond q
+      if (s < 0 || (s == 0 && order.farther(P[u], P[q], P[i])))
+        q = i;  // i right of u → q, or beyond q
     }
     u = q;
   } while (!K::equal(P[u], P[start]) && hull.size() <= idx.size());

@@ -112,7 +112,8 @@ struct ChartOrder {
   /// NEGATIVE when p comes before q, ZERO when p = q, POSITIVE after.
   Sign compare(const Point& p, const Point& q) const {
     //> hull-chart-order
-    if (chart.front && p.w() == 1 && q.w() == 1) {  // the common case: plain comparisons, exact
+    // The common case: plain comparisons, exact.
+    if (chart.front && p.w() == 1 && q.w() == 1) {
       if (p.x() != q.x()) return p.x() < q.x() ? NEGATIVE : POSITIVE;
       return p.y() < q.y() ? NEGATIVE : (p.y() > q.y() ? POSITIVE : ZERO);
     }

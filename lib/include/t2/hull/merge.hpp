@@ -116,7 +116,7 @@ void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std
   }
   if (!some_negative) return;                             // q in H
   if (!some_positive) detail::no_hull<K>(P, H, q);         // ¬q in H
-  std::size_t i = 0;                                      // the first edge of the chain s ≤ 0
+  std::size_t i = 0;  // the first edge of the chain s ≤ 0
   while (!(s[(i + m - 1) % m] > 0 && s[i] <= 0)) ++i;
   std::size_t j = i;                                      // the first edge after it
   while (s[j % m] <= 0) ++j;
@@ -138,7 +138,8 @@ std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
   std::vector<Point> flipped;  // ¬A₂, in the order of neg
   for (std::size_t i = 0; i < P.size(); ++i) {
     const Point& p = P[i];
-    const Sign lex = p.w() != 0 ? sign_of(p.w()) : (p.x() != 0 ? sign_of(p.x()) : sign_of(p.y()));
+    const Sign lex =
+        p.w() != 0 ? sign_of(p.w()) : (p.x() != 0 ? sign_of(p.x()) : sign_of(p.y()));
     if (lex > 0) {
       pos.push_back(i);
     } else {

@@ -52,9 +52,11 @@ std::vector<std::size_t> monotone_chain(std::span<const Point> P, std::vector<st
     return h.idx;
   }
   h.idx.reserve(s.size() + 1), h.pts.reserve(s.size() + 1);
-  for (const auto& e : s) detail::chain_step<K>(h, 0, e, trace);  // lower chain, left to right
-  const std::size_t lower = h.idx.size() - 1;                      // the upper chain keeps it
-  for (auto it = s.rbegin() + 1; it != s.rend(); ++it) detail::chain_step<K>(h, lower, *it, trace);
+  for (const auto& e : s)
+    detail::chain_step<K>(h, 0, e, trace);  // lower chain, left to right
+  const std::size_t lower = h.idx.size() - 1;  // the upper chain keeps it
+  for (auto it = s.rbegin() + 1; it != s.rend(); ++it)
+    detail::chain_step<K>(h, lower, *it, trace);
   h.idx.pop_back();  // the first point again
   //< hull-monotone
   return h.idx;

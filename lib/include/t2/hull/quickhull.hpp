@@ -56,13 +56,16 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
                         [&](const Point& p, const Point& q) { return -K::orient(p, q, d); });
     }
   }
-  for (int axis = 0; axis < 4 && h == static_cast<std::size_t>(-1); ++axis) {  // extreme in x, −x, y, −y
+  // Extreme in x, −x, y, −y.
+  for (int axis = 0; axis < 4 && h == static_cast<std::size_t>(-1); ++axis) {
     h = extreme_of<K>(P, S, a, b, order, [&](const Point& p, const Point& q) {
-      const Sign s = axis < 2 ? -orient_to<K>(p, q, chart.y_inf) : orient_to<K>(q, p, chart.x_inf);
+      const Sign s =
+          axis < 2 ? -orient_to<K>(p, q, chart.y_inf) : orient_to<K>(q, p, chart.x_inf);
       return axis % 2 == 0 ? s : -s;
     });
   }
-  if (h == static_cast<std::size_t>(-1)) {  // a gift-wrapping step from a always finds a vertex
+  // A gift-wrapping step from a always finds a vertex.
+  if (h == static_cast<std::size_t>(-1)) {
     h = S[0];
     for (std::size_t i : S) {
       const Sign s = K::orient(P[a], P[h], P[i]);
