@@ -49,7 +49,8 @@ void winged_edge() {
   std::cout << "== the winged-edge structure of the cube\n";
   //> winged-cube
   const t2::WingedEdge W = t2::WingedEdge::from(t2::platonic(t2::Platonic::cube));
-  std::cout << "edges: " << W.edges.size() << ", pointers checked: " << (W.validate().empty() ? "ok" : "BROKEN") << "\n";
+  std::cout << "edges: " << W.edges.size()
+            << ", pointers checked: " << (W.validate().empty() ? "ok" : "BROKEN") << "\n";
   for (std::uint32_t v : {0u, 7u}) {
     std::cout << "faces around vertex " << v << ":";
     for (std::uint32_t f : W.vertex_faces(v)) std::cout << " f" << f;
@@ -72,13 +73,17 @@ void three_algorithms(const std::filesystem::path& dir) {
   //> three-algorithms
   const std::vector<Point3> P = generated(t2::gen::Kind::cube, 2000, 8);
   const t2::Facets ref = t2::hull_facets_3d(P, Hull3dAlgorithm::gift_wrap);
-  for (Hull3dAlgorithm a : {Hull3dAlgorithm::gift_wrap, Hull3dAlgorithm::incremental, Hull3dAlgorithm::quickhull}) {
+  for (Hull3dAlgorithm a : {Hull3dAlgorithm::gift_wrap, Hull3dAlgorithm::incremental,
+                            Hull3dAlgorithm::quickhull}) {
     const t2::Facets f = t2::hull_facets_3d(P, a);
-    std::cout << t2::name(a) << ": " << f.size() << " facets" << (f == ref ? "" : "   DIFFERS") << "\n";
+    std::cout << t2::name(a) << ": " << f.size() << " facets"
+              << (f == ref ? "" : "   DIFFERS") << "\n";
   }
   const t2::Polyhedron H = t2::polyhedron_of(P, ref);
-  std::cout << "vertices " << H.vertices.size() << ", V-E+F = " << t2::euler_characteristic(H)
-            << ", every point inside: " << (t2::contains_all(H, P) ? "true" : "false") << "\n";
+  std::cout << "vertices " << H.vertices.size()
+            << ", V-E+F = " << t2::euler_characteristic(H)
+            << ", every point inside: " << (t2::contains_all(H, P) ? "true" : "false")
+            << "\n";
   //< three-algorithms
   require(t2::hull_facets_3d(P, Hull3dAlgorithm::incremental) == ref, "incremental == gift wrapping");
   const std::vector<Point3> S = generated(t2::gen::Kind::cube, 150, 3);
@@ -102,7 +107,8 @@ void degenerate(const std::filesystem::path& dir) {
   dr::View3 v;
   dr::save_polyhedron(t2::hull_polyhedron(G), v, dir / "grid-hull.svg", G);
   //> undefined
-  const std::vector<Point3> flat = {{0, 0, 1}, {1, 0, 2}, {0, 1, 3}, {1, 1, 4}, {2, 5, 13}};  // z = 1 + x + 2y
+  // z = 1 + x + 2y
+  const std::vector<Point3> flat = {{0, 0, 1}, {1, 0, 2}, {0, 1, 3}, {1, 1, 4}, {2, 5, 13}};
   try {
     t2::hull_facets_3d(flat);
     std::cout << "a hull?\n";
@@ -115,17 +121,24 @@ void degenerate(const std::filesystem::path& dir) {
 void lifting(const std::filesystem::path& dir) {
   std::cout << "== the lifting map\n";
   //> lifting
-  const std::vector<t2::Point> A = {t2::Point::cartesian(0, 0),  t2::Point::cartesian(4, 1), t2::Point::cartesian(1, 5),
-                                    t2::Point::cartesian(-3, 2), t2::Point::cartesian(-2, -4), t2::Point::cartesian(3, -3),
-                                    t2::Point::cartesian(6, 4),  t2::Point::cartesian(-5, -1)};
+  const std::vector<t2::Point> A = {
+      t2::Point::cartesian(0, 0),   t2::Point::cartesian(4, 1),
+      t2::Point::cartesian(1, 5),   t2::Point::cartesian(-3, 2),
+      t2::Point::cartesian(-2, -4), t2::Point::cartesian(3, -3),
+      t2::Point::cartesian(6, 4),   t2::Point::cartesian(-5, -1)};
   const std::vector<t2::Triangle3> lower = t2::delaunay_by_lifting(A);
   for (const auto& t : lower) std::cout << t[0] << t[1] << t[2] << " ";
   auto flips = t2::delaunay(A).finite_triangles();  // by flips (chapter 10)
   std::sort(flips.begin(), flips.end());
-  std::cout << "\nthe same as t2::delaunay: " << (lower.size() == flips.size() &&
-                                                  std::equal(lower.begin(), lower.end(), flips.begin(), [](auto& a, auto& b) {
-                                                    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-                                                  }) ? "true" : "false") << "\n";
+  std::cout << "\nthe same as t2::delaunay: "
+            << (lower.size() == flips.size() &&
+                        std::equal(lower.begin(), lower.end(), flips.begin(),
+                                   [](auto& a, auto& b) {
+                                     return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+                                   })
+                    ? "true"
+                    : "false")
+            << "\n";
   //< lifting
   require(lower.size() == flips.size(), "lifting == delaunay");
   std::vector<Point3> L;

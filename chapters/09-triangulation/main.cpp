@@ -30,9 +30,10 @@ void require(bool ok, const char* what) {
 // Ten front points, no three collinear, no four cocircular.
 std::vector<Point> small_set() {
   //> small-set
-  return {Point::cartesian(0, 0),    Point::cartesian(4, -1),  Point::cartesian(7, 1),   Point::cartesian(2, 3),
-          Point::cartesian(5, 4),    Point::cartesian(8, 5),   Point::cartesian(1, 6),   Point::cartesian(4, 8),
-          Point::cartesian(6.5, 7.5), Point::cartesian(3.5, 1.5)};
+  return {Point::cartesian(0, 0),    Point::cartesian(4, -1), Point::cartesian(7, 1),
+          Point::cartesian(2, 3),    Point::cartesian(5, 4),  Point::cartesian(8, 5),
+          Point::cartesian(1, 6),    Point::cartesian(4, 8),  Point::cartesian(6.5, 7.5),
+          Point::cartesian(3.5, 1.5)};
   //< small-set
 }
 
@@ -49,10 +50,12 @@ void counts() {
   //> counts
   const std::vector<Point> P = small_set();
   const Triangulation tr = t2::triangulate(P);
-  const std::size_t n = P.size(), h = tr.hull_edges().size(), t = tr.finite_triangles().size();
+  const std::size_t n = P.size(), h = tr.hull_edges().size(),
+                    t = tr.finite_triangles().size();
   std::cout << "n = " << n << " points, h = " << h << " on the hull\n";
   std::cout << "triangles: " << t << " = 2n - h - 2 = " << 2 * n - h - 2 << "\n";
-  std::cout << "with v-infinity: " << tr.size() << " triangles = 2(n + 1) - 4 = " << 2 * (n + 1) - 4 << "\n";
+  std::cout << "with v-infinity: " << tr.size()
+            << " triangles = 2(n + 1) - 4 = " << 2 * (n + 1) - 4 << "\n";
   std::cout << "triangles:" << triangles(tr) << "\n";
   //< counts
   require(t == 2 * n - h - 2 && tr.size() == 2 * (n + 1) - 4 && tr.valid(), "Euler");
@@ -62,27 +65,35 @@ void counts() {
 void operations() {
   std::cout << "== the operations, one after the other\n";
   //> operations
-  const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(4, 0), Point::cartesian(2, 4),
-                                Point::cartesian(2, 1), Point::cartesian(3, 2), Point::cartesian(5, 3)};
+  const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(4, 0),
+                                Point::cartesian(2, 4), Point::cartesian(2, 1),
+                                Point::cartesian(3, 2), Point::cartesian(5, 3)};
   Triangulation tr(P);
   tr.make_triangle(0, 1, 2);  // t0 = (0 1 2) and three infinite triangles
   std::cout << "make_triangle:" << triangles(tr) << "\n";
   tr.insert_in_face(0, 3);  // p3 = (2, 1) lies inside t0
   std::cout << "insert_in_face p3:" << triangles(tr) << "\n";
-  const Index t = 4;  // (3 1 2): its edge opposite p3 (slot 0) is the segment p1 p2, which holds p4
+  // (3 1 2): its edge opposite p3 (slot 0) is the segment p1 p2, which holds p4
+  const Index t = 4;
   tr.insert_on_edge(t, 0, 4);
   std::cout << "insert_on_edge p4:" << triangles(tr) << "\n";
-  // p5 = (5, 3) is outside the hull, beyond the edge p1 p4: insert it in that infinite triangle.
+  // p5 = (5, 3) is outside the hull, beyond the edge p1 p4: insert it in that infinite
+  // triangle.
   Index f = 0;
-  while (tr.slot(f, Triangulation::infinite) < 0 || !t2::detail::sees_hull_edge(tr, f, P[5])) ++f;
+  while (tr.slot(f, Triangulation::infinite) < 0 ||
+         !t2::detail::sees_hull_edge(tr, f, P[5]))
+    ++f;
   tr.insert_in_face(f, 5);
   std::cout << "p5 into the infinite triangle " << f << ":" << triangles(tr) << "\n";
   const Index n = static_cast<Index>(tr.size());
-  for (Index g : {f, n - 2, n - 1})  // the new infinite triangles: remove the reflex angles at p5
-    if (tr.vertex(g, 1) == Triangulation::infinite || tr.vertex(g, 2) == Triangulation::infinite)
+  // the new infinite triangles: remove the reflex angles at p5
+  for (Index g : {f, n - 2, n - 1})
+    if (tr.vertex(g, 1) == Triangulation::infinite ||
+        tr.vertex(g, 2) == Triangulation::infinite)
       t2::detail::flip_hull_chain(tr, g);
   std::cout << "after step 35:" << triangles(tr) << "\n";
-  std::cout << "valid: " << (tr.valid() ? "yes" : "no") << ", hull edges: " << tr.hull_edges().size() << "\n";
+  std::cout << "valid: " << (tr.valid() ? "yes" : "no")
+            << ", hull edges: " << tr.hull_edges().size() << "\n";
   //< operations
   require(tr.valid(), "operations");
   std::cout << "\n";

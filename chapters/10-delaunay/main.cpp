@@ -36,7 +36,8 @@ struct P2 {
 };
 
 //> quality
-// The smallest angle and the smallest height of the triangle a b c (doubles: an illustration).
+// The smallest angle and the smallest height of the triangle a b c (doubles: an
+// illustration).
 double min_angle(P2 a, P2 b, P2 c) {
   auto at = [](P2 o, P2 p, P2 q) {
     return std::abs(std::atan2((p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x),
@@ -46,17 +47,23 @@ double min_angle(P2 a, P2 b, P2 c) {
 }
 double min_height(P2 a, P2 b, P2 c) {  // twice the area over the longest side
   const double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-  return area2 / std::max({std::hypot(b.x - a.x, b.y - a.y), std::hypot(c.x - b.x, c.y - b.y),
-                           std::hypot(a.x - c.x, a.y - c.y)});
+  return area2 /
+         std::max({std::hypot(b.x - a.x, b.y - a.y), std::hypot(c.x - b.x, c.y - b.y),
+                   std::hypot(a.x - c.x, a.y - c.y)});
 }
-// Which diagonal of the convex quadrilateral q0 q1 q2 q3 each rule keeps: 0 for q0 q2, 1 for q1 q3.
+// Which diagonal of the convex quadrilateral q0 q1 q2 q3 each rule keeps: 0 for q0 q2, 1
+// for q1 q3.
 int by_angle(const std::array<P2, 4>& q) {
   return std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3])) >=
-                 std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3])) ? 0 : 1;
+                 std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3]))
+             ? 0
+             : 1;
 }
 int by_height(const std::array<P2, 4>& q) {
   return std::min(min_height(q[0], q[1], q[2]), min_height(q[0], q[2], q[3])) >=
-                 std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3])) ? 0 : 1;
+                 std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3]))
+             ? 0
+             : 1;
 }
 //< quality
 
@@ -103,20 +110,24 @@ void heights() {
   for (const P2& p : q) std::cout << " (" << p.x << ", " << p.y << ")";
   std::cout << "\n";
   const double deg = 180 / std::acos(-1.0);
-  const double a02 = std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3])) * deg;
-  const double a13 = std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3])) * deg;
+  const double a02 =
+      std::min(min_angle(q[0], q[1], q[2]), min_angle(q[0], q[2], q[3])) * deg;
+  const double a13 =
+      std::min(min_angle(q[0], q[1], q[3]), min_angle(q[1], q[2], q[3])) * deg;
   const double h02 = std::min(min_height(q[0], q[1], q[2]), min_height(q[0], q[2], q[3]));
   const double h13 = std::min(min_height(q[0], q[1], q[3]), min_height(q[1], q[2], q[3]));
   std::cout << "diagonal q0 q2: min angle " << a02 << " deg, min height " << h02 << "\n";
   std::cout << "diagonal q1 q3: min angle " << a13 << " deg, min height " << h13 << "\n";
-  std::cout << "max-min angle keeps q" << by_angle(q) << " q" << by_angle(q) + 2 << ", max-min height keeps q"
-            << by_height(q) << " q" << by_height(q) + 2 << ", the empty circle keeps q" << by_circle(q) << " q"
-            << by_circle(q) + 2 << "\n";
+  std::cout << "max-min angle keeps q" << by_angle(q) << " q" << by_angle(q) + 2
+            << ", max-min height keeps q" << by_height(q) << " q" << by_height(q) + 2
+            << ", the empty circle keeps q" << by_circle(q) << " q" << by_circle(q) + 2
+            << "\n";
   //< counterexample
   require(by_angle(q) == by_circle(q) && by_height(q) != by_angle(q), "counterexample");
   //> rate
   std::mt19937_64 rng(10);
-  auto u = [](std::mt19937_64& g) { return double(g() >> 11) * 0x1p-53; };  // uniform in [0, 1), exact
+  // uniform in [0, 1), exact
+  auto u = [](std::mt19937_64& g) { return double(g() >> 11) * 0x1p-53; };
   int convex = 0, differ = 0, angle_not_circle = 0;
   while (convex < 100000) {
     std::array<P2, 4> r;
@@ -126,9 +137,11 @@ void heights() {
     differ += by_angle(r) != by_height(r);
     angle_not_circle += by_angle(r) != by_circle(r);
   }
-  std::cout << "random convex quadrilaterals: " << convex << ", the rules differ on " << differ << " (1 in "
-            << std::setprecision(1) << double(convex) / differ << ")\n";
-  std::cout << "max-min angle against the empty circle: " << angle_not_circle << " differences\n";
+  std::cout << "random convex quadrilaterals: " << convex << ", the rules differ on "
+            << differ << " (1 in " << std::setprecision(1) << double(convex) / differ
+            << ")\n";
+  std::cout << "max-min angle against the empty circle: " << angle_not_circle
+            << " differences\n";
   //< rate
   std::cout << std::setprecision(2) << "\n";
 }
@@ -143,9 +156,10 @@ void lawson() {
     const std::vector<Point> P = t2::gen::points(t2::gen::Kind::uniform, o);
     Triangulation tr = t2::triangulate(P);
     const std::size_t flips = t2::flip_to_delaunay(tr);
-    const bool same = tr.finite_triangles().size() == t2::delaunay(P).finite_triangles().size();
-    std::cout << "uniform n = " << n << ": " << flips << " flips (" << double(flips) / n << " per point)"
-              << (same ? "" : " DIFFERS") << "\n";
+    const bool same =
+        tr.finite_triangles().size() == t2::delaunay(P).finite_triangles().size();
+    std::cout << "uniform n = " << n << ": " << flips << " flips (" << double(flips) / n
+              << " per point)" << (same ? "" : " DIFFERS") << "\n";
   }
   for (int n : {50, 100, 200}) {  // two rows: the sweep's zigzag needs a quadratic number
     std::vector<Point> P;
@@ -175,7 +189,8 @@ void incremental() {
     o.n = 100000;
     const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
     std::size_t flips = 0;
-    const Triangulation tr = t2::delaunay_with(std::span<const Point>(P), Counting{{}, &flips});
+    const Triangulation tr =
+        t2::delaunay_with(std::span<const Point>(P), Counting{{}, &flips});
     std::cout << kind << ": " << double(flips) / double(P.size()) << " flips per point, "
               << tr.finite_triangles().size() << " triangles\n";
   }

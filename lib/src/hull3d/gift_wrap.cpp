@@ -98,7 +98,9 @@ Facets gift_wrap_3d(std::span<const Point3> P) {
     const Point3 &f0 = P[facets[f][0]], &f1 = P[facets[f][1]], &f2 = P[facets[f][2]];
     std::uint32_t p = a;  // a point strictly inside the plane of f, then the wrap
     for (std::uint32_t q : ids)
-      if (p == a ? orient3d(f0, f1, f2, P[q]) == NEGATIVE : orient3d(P[b], P[a], P[p], P[q]) == POSITIVE) p = q;
+      if (p == a ? orient3d(f0, f1, f2, P[q]) == NEGATIVE
+                 : orient3d(P[b], P[a], P[p], P[q]) == POSITIVE)
+        p = q;
     add(facet(b, a, p));
   }
   //< gift-wrap

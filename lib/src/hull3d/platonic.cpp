@@ -64,18 +64,24 @@ Polyhedron polar_dual(const Polyhedron& P) {
 Polyhedron platonic(Platonic s) {
   std::vector<Point3> X;
   switch (s) {
-    case Platonic::tetrahedron: X = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; break;
+    case Platonic::tetrahedron:
+      X = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+      break;
     case Platonic::cube:
       for (double x : {-1, 1})
         for (double y : {-1, 1})
           for (double z : {-1, 1}) X.push_back({x, y, z});
       break;
-    case Platonic::octahedron: X = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}; break;
+    case Platonic::octahedron:
+      X = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+      break;
     case Platonic::icosahedron:  // (0, ±1, ±φ) and cyclic, with φ ≈ 34/21, scaled by 21
       for (double a : {-21, 21})
         for (double b : {-34, 34}) X.insert(X.end(), {{0, a, b}, {a, b, 0}, {b, 0, a}});
       break;
-    case Platonic::dodecahedron: X = polar_dual(platonic(Platonic::icosahedron)).vertices; break;
+    case Platonic::dodecahedron:
+      X = polar_dual(platonic(Platonic::icosahedron)).vertices;
+      break;
   }
   return hull_polyhedron(X);
 }

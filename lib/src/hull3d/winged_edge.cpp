@@ -64,11 +64,15 @@ std::vector<std::uint32_t> WingedEdge::face_vertices(std::uint32_t f) const {
 std::vector<std::uint32_t> WingedEdge::vertex_faces(std::uint32_t v) const {
   std::vector<std::uint32_t> out;
   std::uint32_t e = vertices[v].av;
-  std::uint32_t f = (v == edges[e].v1) ? edges[e].fccw : edges[e].fcw;  // the face in which e leaves v
-  do {  // f is the next face counter-clockwise around v across the edge by which f enters v
+  // the face in which e leaves v
+  std::uint32_t f = (v == edges[e].v1) ? edges[e].fccw : edges[e].fcw;
+  // f is the next face counter-clockwise around v across the edge by which f enters v
+  do {
     out.push_back(f);
-    e = (f == edges[e].fccw) ? edges[e].pccw : edges[e].pcw;  // the edge before e in f: it enters v
-    f = (edges[e].fccw == f) ? edges[e].fcw : edges[e].fccw;  // across it, e leaves v again
+    // the edge before e in f: it enters v
+    e = (f == edges[e].fccw) ? edges[e].pccw : edges[e].pcw;
+    // across it, e leaves v again
+    f = (edges[e].fccw == f) ? edges[e].fcw : edges[e].fccw;
   } while (e != vertices[v].av && out.size() <= faces.size());
   return out;
 }

@@ -44,7 +44,8 @@ void Triangulation::make_fan(Index p, const Index* ring, const Index* ext, const
 //> insert-in-face
 void Triangulation::insert_in_face(Index t, Index p) {
   const Index ring[3] = {v_[3 * t], v_[3 * t + 1], v_[3 * t + 2]};
-  const Index ext[3] = {n_[3 * t + 2], n_[3 * t], n_[3 * t + 1]};  // outside a→b, b→c, c→a
+  // outside a→b, b→c, c→a
+  const Index ext[3] = {n_[3 * t + 2], n_[3 * t], n_[3 * t + 1]};
   const Index t1 = add_triangle(), t2 = add_triangle();
   const Index tri[3] = {t, t1, t2};
   make_fan(p, ring, ext, tri, 3);
@@ -67,7 +68,8 @@ void Triangulation::insert_on_edge(Index t, int i, Index p) {
 void Triangulation::flip(Index t, int i) {
   const Index e = n_[3 * t + i], u = e / 3;
   const int j = static_cast<int>(e % 3);
-  const Index p = v_[3 * t + i], q = v_[3 * t + next(i)], r = v_[3 * t + prev(i)], d = v_[3 * u + j];
+  const Index p = v_[3 * t + i], q = v_[3 * t + next(i)], r = v_[3 * t + prev(i)],
+              d = v_[3 * u + j];
   const Index qd = n_[3 * u + next(j)], dr = n_[3 * u + prev(j)];  // beyond q→d and d→r
   const Index rp = n_[3 * t + next(i)], pq = n_[3 * t + prev(i)];  // beyond r→p and p→q
   set(t, p, q, d);

@@ -94,14 +94,17 @@ struct DelaunayKernel {
 };
 
 //> perturbed-in-circle
-/// The in-circle sign of d against the counter-clockwise triangle a, b, c under the symbolic
-/// perturbation of the file comment: never ZERO for four distinct points.
+/// The in-circle sign of d against the counter-clockwise triangle a, b, c under the
+/// symbolic perturbation of the file comment: never ZERO for four distinct points.
 template <class K>
-Sign perturbed_in_circle(const K& k, const Point& a, const Point& b, const Point& c, const Point& d) {
+Sign perturbed_in_circle(const K& k, const Point& a, const Point& b, const Point& c,
+                         const Point& d) {
   const Sign s = k.in_circle(a, b, c, d);
   if (s != ZERO) return s;
   const Point* p[4] = {&a, &b, &c, &d};
-  std::sort(p, p + 4, [&](const Point* u, const Point* v) { return k.compare_xy(*u, *v) == NEGATIVE; });
+  std::sort(p, p + 4, [&](const Point* u, const Point* v) {
+    return k.compare_xy(*u, *v) == NEGATIVE;
+  });
   for (int i = 3; i > 1; --i) {  // from the largest point, whose perturbation dominates
     Sign o = ZERO;
     if (p[i] == &d) return NEGATIVE;
@@ -110,7 +113,8 @@ Sign perturbed_in_circle(const K& k, const Point& a, const Point& b, const Point
     if (p[i] == &a) o = k.orient(d, b, c);
     if (o != ZERO) return o;
   }
-  throw Undefined("perturbed_in_circle: four collinear points (a, b, c must turn counter-clockwise)");
+  throw Undefined(
+      "perturbed_in_circle: four collinear points (a, b, c must turn counter-clockwise)");
 }
 //< perturbed-in-circle
 
@@ -205,9 +209,14 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   for (Index m = 3; m < n; ++m) {
     const Index p = next_point();
     const Triangulation::Location loc = tr.locate(
-        pts[p], last, [&](const Point& u, const Point& v, const Point& w) { return kernel.orient(u, v, w); }, rng);
+        pts[p], last,
+        [&](const Point& u, const Point& v, const Point& w) {
+          return kernel.orient(u, v, w);
+        },
+        rng);
     if (loc.kind == Triangulation::Location::vertex) {
-      const Index v = tr.vertex(loc.t, loc.i);  // the kept point is the one of smaller input index
+      // the kept point is the one of smaller input index
+      const Index v = tr.vertex(loc.t, loc.i);
       if (order[p] < order[v]) tr.rename_vertex(loc.t, v, p);
       tr.add_duplicate(order[p] < order[v] ? v : p, order[p] < order[v] ? p : v);
       continue;
@@ -223,7 +232,8 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
     }
     kernel.inserted(tr, p);
     last = loc.t;
-    while (!stack.empty()) {  // Lawson: every edge opposite p, p is vertex 0 of its triangle
+    // Lawson: every edge opposite p, p is vertex 0 of its triangle
+    while (!stack.empty()) {
       const Index t = stack.back() / 3;
       stack.pop_back();
       const Index u = tr.neighbor(t, 0);

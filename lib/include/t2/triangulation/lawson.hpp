@@ -41,22 +41,24 @@
 namespace t2 {
 
 //> is-legal
-/// True when the edge opposite vertex i of triangle t is legal (see the file comment): a hull
-/// edge, an edge at v∞, or an edge whose far vertex d is outside the (perturbed) circle of t.
+/// True when the edge opposite vertex i of triangle t is legal (see the file comment): a
+/// hull edge, an edge at v∞, or an edge whose far vertex d is outside the (perturbed)
+/// circle of t.
 inline bool is_legal(const Triangulation& tr, Triangulation::Index t, int i) {
   const Triangulation::Index e = tr.twin(t, i), u = e / 3;
   if (tr.is_infinite(t) || tr.is_infinite(u)) return true;
   const Point& d = tr.point(tr.vertex(u, static_cast<int>(e % 3)));
-  return perturbed_in_circle(DelaunayKernel{}, tr.point(tr.vertex(t, 0)), tr.point(tr.vertex(t, 1)),
-                             tr.point(tr.vertex(t, 2)), d) == NEGATIVE;
+  return perturbed_in_circle(DelaunayKernel{}, tr.point(tr.vertex(t, 0)),
+                             tr.point(tr.vertex(t, 1)), tr.point(tr.vertex(t, 2)),
+                             d) == NEGATIVE;
 }
 //< is-legal
 
 //> lawson
-/// Lawson's algorithm: flips illegal edges of `tr` (dimension 2) until every edge is legal;
-/// returns the number of flips. A stack holds half-edges that may be illegal: at first all of
-/// them, then, after each flip, the four outer edges of its quadrilateral (the only edges whose
-/// far vertex changed).
+/// Lawson's algorithm: flips illegal edges of `tr` (dimension 2) until every edge is
+/// legal; returns the number of flips. A stack holds half-edges that may be illegal: at
+/// first all of them, then, after each flip, the four outer edges of its quadrilateral
+/// (the only edges whose far vertex changed).
 inline std::size_t flip_to_delaunay(Triangulation& tr) {
   using Index = Triangulation::Index;
   if (tr.dimension() < 2) return 0;

@@ -49,16 +49,18 @@ inline bool sees_hull_edge(const Triangulation& tr, Triangulation::Index f, cons
 }
 
 //> sweep-hull-flips
-/// Removes the reflex angles at the new hull vertex p (seed 000, Algorithm 9, step 35): t is an
-/// infinite triangle with p at slot 0; while p sees strictly the hull edge of the infinite
-/// triangle u across the edge opposite p, flip that edge (u's hull edge becomes a finite
-/// triangle with p). Returns the infinite triangle at p where the chain stops.
+/// Removes the reflex angles at the new hull vertex p (seed 000, Algorithm 9, step 35): t
+/// is an infinite triangle with p at slot 0; while p sees strictly the hull edge of the
+/// infinite triangle u across the edge opposite p, flip that edge (u's hull edge becomes
+/// a finite triangle with p). Returns the infinite triangle at p where the chain stops.
 inline Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t) {
-  const bool backward = tr.vertex(t, 2) == Triangulation::infinite;  // t = (p, a, v∞), else (p, v∞, b)
+  // t = (p, a, v∞), else (p, v∞, b)
+  const bool backward = tr.vertex(t, 2) == Triangulation::infinite;
   for (;;) {
     const Triangulation::Index u = tr.neighbor(t, 0);
     if (!sees_hull_edge(tr, u, tr.point(tr.vertex(t, 0)))) return t;
-    tr.flip(t, 0);  // (p, a, v∞) + (a, x, v∞) -> (p, a, x) + (p, x, v∞), and the mirror image
+    // (p, a, v∞) + (a, x, v∞) -> (p, a, x) + (p, x, v∞), and the mirror image
+    tr.flip(t, 0);
     if (backward) t = u;
   }
 }
@@ -122,22 +124,24 @@ inline Triangulation triangulate(std::span<const Point> input) {
     return tr;
   }
   //> triangulate
-  // The first triangle: u[0], u[c-1] and u[c]; the points u[1..c-2] between the first two (on
-  // their line) go into that edge, each into the part left over by the previous one.
+  // The first triangle: u[0], u[c-1] and u[c]; the points u[1..c-2] between the first two
+  // (on their line) go into that edge, each into the part left over by the previous one.
   const Index a = u[0], b = u[c - 1], q = u[c];
   const bool ccw = orient(input[a], input[b], input[q]) > 0;
   if (ccw) tr.make_triangle(a, b, q, u.size()); else tr.make_triangle(b, a, q, u.size());
-  for (std::size_t k = 1; k + 1 < c; ++k) {  // the edge is opposite slot 2 of t0, then of the newest triangle
+  // the edge is opposite slot 2 of t0, then of the newest triangle
+  for (std::size_t k = 1; k + 1 < c; ++k) {
     const Index t = k == 1 ? 0 : static_cast<Index>(tr.size() - 1);
     tr.insert_on_edge(t, 2, u[ccw ? k : c - k - 1]);
   }
-  // The sweep: each point sees a hull edge at the previous one, m, whose infinite triangles are
-  // (m, x, v∞) and (m, v∞, y) (t1 and t2 of make_triangle for m = q).
+  // The sweep: each point sees a hull edge at the previous one, m, whose infinite
+  // triangles are (m, x, v∞) and (m, v∞, y) (t1 and t2 of make_triangle for m = q).
   Index back = 1, fwd = 2;
   for (std::size_t k = c + 1; k < u.size(); ++k) {
     const Index p = u[k];
     const Index hit = detail::sees_hull_edge(tr, back, input[p]) ? back : fwd;
-    if (!detail::sees_hull_edge(tr, hit, input[p])) throw std::logic_error("triangulate: no hull edge seen");
+    if (!detail::sees_hull_edge(tr, hit, input[p]))
+      throw std::logic_error("triangulate: no hull edge seen");
     tr.insert_in_face(hit, p);  // p is vertex 0 of hit and of the last two triangles
     const Index n = static_cast<Index>(tr.size());
     for (Index f : {hit, n - 2, n - 1}) {

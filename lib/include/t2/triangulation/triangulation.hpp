@@ -125,20 +125,22 @@ class Triangulation {
   bool valid() const { return validate().empty(); }
 
   //> triangulation-operations
-  /// Starts dimension 2 with the counter-clockwise triangle (a, b, c) and its three infinite
-  /// triangles; `reserve` is the expected number of points (storage for 2·reserve triangles).
+  /// Starts dimension 2 with the counter-clockwise triangle (a, b, c) and its three
+  /// infinite triangles; `reserve` is the expected number of points (storage for
+  /// 2·reserve triangles).
   void make_triangle(Index a, Index b, Index c, std::size_t reserve = 0);
-  /// Inserts point p strictly inside triangle t (finite), or strictly outside the hull edge of
-  /// the infinite triangle t. Afterwards p is vertex 0 of three triangles, whose first one is
-  /// returned as t itself and the other two as the last two triangles.
+  /// Inserts point p strictly inside triangle t (finite), or strictly outside the hull
+  /// edge of the infinite triangle t. Afterwards p is vertex 0 of three triangles, whose
+  /// first one is returned as t itself and the other two as the last two triangles.
   void insert_in_face(Index t, Index p);
-  /// Inserts point p in the relative interior of the edge opposite vertex i of t (that edge may
-  /// be a hull edge). Afterwards p is vertex 0 of four triangles: t, twin's triangle and the
-  /// last two.
+  /// Inserts point p in the relative interior of the edge opposite vertex i of t (that
+  /// edge may be a hull edge). Afterwards p is vertex 0 of four triangles: t, twin's
+  /// triangle and the last two.
   void insert_on_edge(Index t, int i, Index p);
-  /// Flips the edge opposite vertex i of t, shared with t' = neighbor(t, i) whose opposite
-  /// vertex is d: with t = (p, q, r), the quadrilateral p, q, d, r becomes t = (p, q, d) and
-  /// t' = (p, d, r). The caller guarantees that the quadrilateral is strictly convex.
+  /// Flips the edge opposite vertex i of t, shared with t' = neighbor(t, i) whose
+  /// opposite vertex is d: with t = (p, q, r), the quadrilateral p, q, d, r becomes t =
+  /// (p, q, d) and t' = (p, d, r). The caller guarantees that the quadrilateral is
+  /// strictly convex.
   void flip(Index t, int i);
   //< triangulation-operations
 
@@ -215,8 +217,10 @@ Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& 
     const Index* v = &v_[3 * t];
     const int inf = v[0] == infinite ? 0 : v[1] == infinite ? 1 : v[2] == infinite ? 2 : -1;
     if (inf >= 0) {  // only at the start, or when we stepped out of the hull
-      if (from >= 0 || orient(points_[v[next(inf)]], points_[v[prev(inf)]], p) > 0) return {Location::face, t, inf};
-      t = n_[3 * t + inf] / 3;  // p may lie on the line of that edge: test all three edges there
+      if (from >= 0 || orient(points_[v[next(inf)]], points_[v[prev(inf)]], p) > 0)
+        return {Location::face, t, inf};
+      // p may lie on the line of that edge: test all three edges there
+      t = n_[3 * t + inf] / 3;
       from = -1;
       continue;
     }
@@ -240,7 +244,8 @@ Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& 
     const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
     if (zeros == 0) return {Location::face, t, 0};
     if (zeros == 1) return {Location::edge, t, o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2};
-    return {Location::vertex, t, o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2};  // the vertex off both lines
+    // the vertex off both lines
+    return {Location::vertex, t, o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2};
   }
   //< walk
 }
