@@ -48,7 +48,8 @@ void polygon_hull() {
   const std::vector<Point> P = chapter07::pocket_polygon();
   const std::vector<std::size_t> h = t2::melkman(P);
   std::cout << "polygon of " << P.size() << " vertices, hull:" << indices(h) << "\n";
-  std::cout << "the same as convex_hull: " << std::boolalpha << same_set(h, t2::convex_hull(P)) << "\n";
+  std::cout << "the same as convex_hull: " << std::boolalpha
+            << same_set(h, t2::convex_hull(P)) << "\n";
   //< melkman-demo
   require(t2::is_simple(P) && same_set(h, t2::convex_hull(P)), "Melkman = convex_hull");
   int agree = 0;
@@ -69,12 +70,14 @@ void calipers() {
   const std::vector<Point> H = chapter07::hexagon();  // two of its edges are parallel
   const std::vector<std::size_t> all{0, 1, 2, 3, 4, 5};
   std::cout << "antipodal pairs:";
-  for (const auto& [a, b] : t2::antipodal_pairs(H, all)) std::cout << " p" << a << "-p" << b;
+  for (const auto& [a, b] : t2::antipodal_pairs(H, all))
+    std::cout << " p" << a << "-p" << b;
   const auto d = t2::diameter(H);
   std::cout << "\ndiameter: p" << d->first << " p" << d->second << ", squared "
             << squared(H[d->first], H[d->second]) << "\n";
   const auto w = t2::width(H);
-  std::cout << "width: edge p" << w->from << " p" << w->to << " and vertex p" << w->vertex << "\n";
+  std::cout << "width: edge p" << w->from << " p" << w->to << " and vertex p" << w->vertex
+            << "\n";
   //< calipers-demo
   std::cout << "\n";
 }
@@ -82,7 +85,8 @@ void calipers() {
 void diameter_in_t2() {
   std::cout << "== the diameter in T2\n";
   //> diameter-t2
-  const std::vector<Point> mixed = chapter07::front_and_back();  // front (0,0), (6,2); back at (-2,3), (5,-1)
+  // front (0,0), (6,2); back at (-2,3), (5,-1)
+  const std::vector<Point> mixed = chapter07::front_and_back();
   const auto d = t2::diameter(mixed);
   std::cout << "farthest p" << d->first << " p" << d->second
             << ", squared " << squared(mixed[d->first], mixed[d->second]) << "\n";
@@ -107,8 +111,10 @@ void layers() {
   const auto jarvis = t2::convex_layers(P, t2::LayersMethod::jarvis);
   const auto graham = t2::convex_layers(P, t2::LayersMethod::graham);
   std::cout << P.size() << " points in a disk: " << jarvis.size() << " layers, outermost "
-            << jarvis.front().size() << " vertices, innermost " << jarvis.back().size() << "\n";
-  std::cout << "both ways agree: " << std::boolalpha << (jarvis.size() == graham.size()) << "\n";
+            << jarvis.front().size() << " vertices, innermost " << jarvis.back().size()
+            << "\n";
+  std::cout << "both ways agree: " << std::boolalpha << (jarvis.size() == graham.size())
+            << "\n";
   //< layers-demo
   for (std::size_t j = 0; j < jarvis.size(); ++j) require(same_set(jarvis[j], graham[j]), "layers agree");
   std::cout << "\n";
@@ -119,15 +125,18 @@ void kernels() {
   //> kernel-demo
   const auto show = [](const char* name, const std::vector<Point>& P) {
     const t2::PolygonKernel K = t2::polygon_kernel(P);
-    std::cout << name << ": " << K.vertices.size() << " corners" << (K.empty() ? " (empty)" : "")
+    std::cout << name << ": " << K.vertices.size() << " corners"
+              << (K.empty() ? " (empty)" : "")
               << (!K.empty() && !K.bounded() ? " (unbounded)" : "") << ":";
-    for (const auto& v : K.vertices) std::cout << " " << t2::to_string(t2::normalized(t2::to_double(v)));
+    for (const auto& v : K.vertices)
+      std::cout << " " << t2::to_string(t2::normalized(t2::to_double(v)));
     std::cout << "\n";
   };
   show("hourglass", chapter07::hourglass());
   show("U", chapter07::u_shape());
   show("pinwheel", chapter07::pinwheel());
-  show("quadrant [1,0,0] [0,1,0] [0,0,1]", {Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)});
+  show("quadrant [1,0,0] [0,1,0] [0,0,1]",
+       {Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)});
   show("corridor [1,0,0] [0,1,0] [1,1,1] [0,0,1]", chapter07::corridor());
   //< kernel-demo
   std::cout << "\n";

@@ -17,12 +17,12 @@
 /// sides (it gives ¬d the same sign as d), so T² needs a definition. With the squared
 /// distances of §4.3.1 (distance.hpp), a circle of T² has a centre z and a radius in T¹;
 /// a point of the other side than z is *beyond infinity* from z. So three points on both
-/// sides of T² (or on Ω) lie on no circle with a proper centre: their circle is centred on
-/// Ω (the lunes below). Three collinear points lie on no circle at all, and `in_circle` throws
-/// `Undefined` for them. For a, b, c proper on one side σ and not collinear, let
-/// z be their circumcentre on side σ and r² = d²(z, a); the *disk* is the set of points
-/// with d²(z, d) < r² in the T¹ order, i.e. the points of side σ strictly inside the
-/// Euclidean circle. Then
+/// sides of T² (or on Ω) lie on no circle with a proper centre: their circle is centred
+/// on Ω (the lunes below). Three collinear points lie on no circle at all, and
+/// `in_circle` throws `Undefined` for them. For a, b, c proper on one side σ and not
+/// collinear, let z be their circumcentre on side σ and r² = d²(z, a); the *disk* is the
+/// set of points with d²(z, d) < r² in the T¹ order, i.e. the points of side σ strictly
+/// inside the Euclidean circle. Then
 ///
 ///     in_circle(a, b, c, d) = orient(a, b, c)
 ///         · (+1 if d is in the disk, 0 if d²(z, d) = r², −1 otherwise)
@@ -35,32 +35,34 @@
 /// mirrored).
 ///
 /// **Centres on Ω: lunes.** Seen from a point u of Ω, the sweep rule of §4.3.1 orders the
-/// points of each side by their normalized coordinates along u, key_u(p) = u·(x, y)/|w| (the
-/// larger, the nearer), and leaves a front and a back point incomparable. So a disk centred at
-/// u has one radius on each side: on each side it is an open half-plane {key_u > k}, bounded
-/// by a half-line perpendicular to u, and its boundary is a *lune*: two half great circles of
-/// the sphere from the point E = u⊥ of Ω to ¬E, one on each side (or one of them on Ω). A lune
-/// is a circle through a, b, c when a, b, c are not all proper on one side:
+/// points of each side by their normalized coordinates along u, key_u(p) = u·(x, y)/|w|
+/// (the larger, the nearer), and leaves a front and a back point incomparable. So a disk
+/// centred at u has one radius on each side: on each side it is an open half-plane
+/// {key_u > k}, bounded by a half-line perpendicular to u, and its boundary is a *lune*:
+/// two half great circles of the sphere from the point E = u⊥ of Ω to ¬E, one on each
+/// side (or one of them on Ω). A lune is a circle through a, b, c when a, b, c are not
+/// all proper on one side:
 /// - *a, b proper on side σ, c on side −σ or on Ω:* the half of the line a ∨ b on side σ,
 ///   from ¬E through a, b to E, the point of Ω the line reaches after b; then the half of
-///   E ∨ c on the other side (if c is on Ω, the half of Ω through c) back to ¬E. On side σ
-///   the interior is the left of a → b; on side −σ, for c proper, the points d with
-///   Δ(a, b, d)/|w_d| > Δ(a, b, c)/|w_c| (farther to the left of a ∨ b than c, the two signs of
-///   w the same) and for c on Ω all of side −σ or none; on Ω the open half of Ω to the left of
-///   a ∨ b (the half through c itself, when c is on Ω, is the circle: ZERO). **With c on Ω this
-///   is the limit case of a triangle with a vertex at infinity: the circle through two points
-///   and a point at infinity is their line,** its inside the half-plane to the left of a → b
-///   (CGAL's infinite vertex, made exact on every side of T²);
-/// - *a on side σ, b on side −σ, c on Ω:* E = c; the half of a ∨ c on side σ and the half of
-///   b ∨ c on side −σ; the interior is the left of c → a on side σ and on Ω, the left of
-///   b → c on side −σ.
+///   E ∨ c on the other side (if c is on Ω, the half of Ω through c) back to ¬E. On side
+///   σ the interior is the left of a → b; on side −σ, for c proper, the points d with
+///   Δ(a, b, d)/|w_d| > Δ(a, b, c)/|w_c| (farther to the left of a ∨ b than c, the two
+///   signs of w the same) and for c on Ω all of side −σ or none; on Ω the open half of Ω
+///   to the left of a ∨ b (the half through c itself, when c is on Ω, is the circle:
+///   ZERO). **With c on Ω this is the limit case of a triangle with a vertex at infinity:
+///   the circle through two points and a point at infinity is their line,** its inside
+///   the half-plane to the left of a → b (CGAL's infinite vertex, made exact on every
+///   side of T²);
+/// - *a on side σ, b on side −σ, c on Ω:* E = c; the half of a ∨ c on side σ and the half
+///   of b ∨ c on side −σ; the interior is the left of c → a on side σ and on Ω, the left
+///   of b → c on side −σ.
 ///
-/// The answer is +1 left of the oriented lune a → b → c, 0 on it, −1 right of it — the same
-/// rule as for a finite circle, so reversing a, b, c again reverses the answer, a rotation of
-/// a, b, c does not change it, and in_circle(¬a, ¬b, ¬c, ¬d) = −in_circle(a, b, c, d). A lune
-/// through a, b, c exists only if they are not collinear (else `Undefined`); with two of a, b, c
-/// on Ω and one proper there are infinitely many (any E with both on one half of Ω), and
-/// `in_circle` throws `Undefined`.
+/// The answer is +1 left of the oriented lune a → b → c, 0 on it, −1 right of it — the
+/// same rule as for a finite circle, so reversing a, b, c again reverses the answer, a
+/// rotation of a, b, c does not change it, and in_circle(¬a, ¬b, ¬c, ¬d) =
+/// −in_circle(a, b, c, d). A lune through a, b, c exists only if they are not collinear
+/// (else `Undefined`); with two of a, b, c on Ω and one proper there are infinitely many
+/// (any E with both on one half of Ω), and `in_circle` throws `Undefined`.
 //< incircle-definition
 
 #include <algorithm>

@@ -104,7 +104,9 @@ bool on_segment_impl(const BasicPoint<T>& p, const BasicPoint<T>& q,
   if (p == q) return r == p;  // the one-point segment
   // (u × v)·(s × t) = (u·s)(v·t) − (u·t)(v·s) (Lagrange's identity) on the coordinates.
   auto coefficient = [](const auto& u, const auto& v, const auto& s, const auto& t) {
-    auto dot = [](const auto& a, const auto& b) { return a.w * b.w + a.x * b.x + a.y * b.y; };
+    auto dot = [](const auto& a, const auto& b) {
+      return a.w * b.w + a.x * b.x + a.y * b.y;
+    };
     return dot(u, s) * dot(v, t) - dot(u, t) * dot(v, s);
   };
   // α: (r × q)·(p × q);  β: (p × r)·(p × q).

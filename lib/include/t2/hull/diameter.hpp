@@ -61,9 +61,11 @@ std::optional<std::pair<std::size_t, std::size_t>> diameter(std::span<const Poin
   const std::vector<std::size_t> hull = convex_hull<K>(P);
   if (hull.size() == 1) return std::make_pair(hull[0], hull[0]);
   std::optional<std::pair<std::size_t, std::size_t>> best;
-  for (const auto& [a, b] : antipodal_pairs(P, hull))  // the largest, not the smallest (seed 003)
-    if (!best || detail::compare_pair_distances(as_front(best->first), as_front(best->second), as_front(a),
-                                                as_front(b)) < 0)
+  // the largest, not the smallest (seed 003)
+  for (const auto& [a, b] : antipodal_pairs(P, hull))
+    if (!best ||
+        detail::compare_pair_distances(as_front(best->first), as_front(best->second),
+                                       as_front(a), as_front(b)) < 0)
       best = std::make_pair(a, b);
   //< diameter
   return best;

@@ -44,8 +44,9 @@ std::vector<std::vector<std::size_t>> convex_layers(std::span<const Point> P,
   std::vector<std::size_t> left(P.size());
   std::iota(left.begin(), left.end(), std::size_t{0});
   while (!left.empty()) {
-    std::vector<std::size_t> layer =
-        method == LayersMethod::jarvis ? jarvis<K>(P, left, chart) : graham<K>(P, left, chart);
+    std::vector<std::size_t> layer = method == LayersMethod::jarvis
+                                         ? jarvis<K>(P, left, chart)
+                                         : graham<K>(P, left, chart);
     std::vector<std::size_t> rest;  // S_{j+1}: what is not equal to a vertex of the layer
     for (std::size_t i : left) {
       bool vertex = false;

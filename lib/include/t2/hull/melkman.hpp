@@ -66,13 +66,16 @@ std::vector<std::size_t> melkman(std::span<const Point> P, Tr&& trace = {}) {
   // A simple chain along one line is monotone: v0 and v[k-1] are the ends of the first run.
   const std::size_t a = v[0], b = v[k - 1], c = v[k];
   std::vector<std::size_t> D(2 * v.size() + 1);
-  std::size_t bot = v.size(), top = bot + 3;  // D[bot..top], d_bot = d_top = the last vertex
+  // D[bot..top], d_bot = d_top = the last vertex
+  std::size_t bot = v.size(), top = bot + 3;
   if (K::orient(P[a], P[b], P[c]) > 0) {
     D[bot] = c, D[bot + 1] = a, D[bot + 2] = b, D[top] = c;
   } else {
     D[bot] = c, D[bot + 1] = b, D[bot + 2] = a, D[top] = c;
   }
-  const auto deque = [&] { return std::span<const std::size_t>(D.data() + bot, top - bot + 1); };
+  const auto deque = [&] {
+    return std::span<const std::size_t>(D.data() + bot, top - bot + 1);
+  };
   // p is inside the hull as seen from edge u → w: strictly left of it, or on the segment.
   const auto inside = [&](std::size_t u, std::size_t w, std::size_t p) {
     const Sign s = K::orient(P[u], P[w], P[p]);
@@ -81,7 +84,8 @@ std::vector<std::size_t> melkman(std::span<const Point> P, Tr&& trace = {}) {
   for (std::size_t i = k + 1; i < v.size(); ++i) {
     const std::size_t p = v[i];
     trace(HullStep::consider, p, deque());
-    if (inside(D[top - 1], D[top], p) && inside(D[bot], D[bot + 1], p)) continue;  // in a pocket
+    // in a pocket
+    if (inside(D[top - 1], D[top], p) && inside(D[bot], D[bot + 1], p)) continue;
     while (K::orient(P[D[top - 1]], P[D[top]], P[p]) <= 0) {
       trace(HullStep::pop, D[top], deque());
       --top;

@@ -98,15 +98,20 @@ inline void cut(std::vector<RegionEdge>& R, const ExactLine& l) {
     const RegionEdge& a = R[k];
     const ExactPoint& b = R[(k + 1) % m].start;
     const Sign sa = s[k], sb = s[(k + 1) % m];
-    if (sa >= 0) out.push_back({a.start, sa == 0 && sb < 0 ? l : a.line});  // kept; leaves along l
-    if (sa > 0 && sb < 0) out.push_back({crossing(a.line, l, a.start, b), l});  // leaves: along l
-    if (sa < 0 && sb > 0) out.push_back({crossing(a.line, l, a.start, b), a.line});  // comes back
+    // kept; leaves along l
+    if (sa >= 0) out.push_back({a.start, sa == 0 && sb < 0 ? l : a.line});
+    // leaves: along l
+    if (sa > 0 && sb < 0) out.push_back({crossing(a.line, l, a.start, b), l});
+    // comes back
+    if (sa < 0 && sb > 0) out.push_back({crossing(a.line, l, a.start, b), a.line});
   }
-  for (std::size_t k = 0; k < out.size() && out.size() > 1; ++k) {  // an edge along l of half a turn:
-    const ExactPoint& x = out[k].start;                              // add the point 90° along it
+  // an edge along l of half a turn: add the point 90° along it
+  for (std::size_t k = 0; k < out.size() && out.size() > 1; ++k) {
+    const ExactPoint& x = out[k].start;
     const ExactPoint& y = out[(k + 1) % out.size()].start;
     if (out[k].line == l && !(x == y) && ahead(l, x, y) <= 0)
-      out.insert(out.begin() + static_cast<std::ptrdiff_t>(k + 1), RegionEdge{cross_point(l, x), l});
+      out.insert(out.begin() + static_cast<std::ptrdiff_t>(k + 1),
+                 RegionEdge{cross_point(l, x), l});
   }
   //< kernel-cut
   R = std::move(out);
@@ -132,13 +137,17 @@ inline PolygonKernel polygon_kernel(std::span<const Point> P) {
   for (const Point& p : V) proper = proper && p.w() > 0;
   if (proper && orientation(V) < 0) std::reverse(V.begin(), V.end());
   //> kernel
-  const ExactPoint X(0, 1, 0), Y(0, 0, 1);  // the closed front hemisphere: Ω in four quarters
-  std::vector<detail::RegionEdge> R{{X, omega<Integer>()}, {Y, omega<Integer>()},
-                                    {antipode(X), omega<Integer>()}, {antipode(Y), omega<Integer>()}};
+  // the closed front hemisphere: Ω in four quarters
+  const ExactPoint X(0, 1, 0), Y(0, 0, 1);
+  std::vector<detail::RegionEdge> R{{X, omega<Integer>()},
+                                    {Y, omega<Integer>()},
+                                    {antipode(X), omega<Integer>()},
+                                    {antipode(Y), omega<Integer>()}};
   for (std::size_t i = 0; i < V.size() && !R.empty(); ++i) {
     const Point& a = V[i];
     const Point& b = V[(i + 1) % V.size()];
-    if (a == antipode(b)) throw BadInput("polygon kernel: consecutive vertices are antipodal");
+    if (a == antipode(b))
+      throw BadInput("polygon kernel: consecutive vertices are antipodal");
     detail::cut(R, join(to_exact(a), to_exact(b)));
   }
   //< kernel
