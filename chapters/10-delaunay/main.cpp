@@ -206,7 +206,8 @@ void divide() {
   o.n = 100000;
   for (const char* kind : {"uniform", "kuzmin", "grid", "circle"}) {
     const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
-    auto a = t2::delaunay_divide(P).finite_triangles(), b = t2::delaunay(P).finite_triangles();
+    auto a = t2::delaunay_divide(P).finite_triangles();
+    auto b = t2::delaunay(P).finite_triangles();
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     std::cout << kind << ": " << a.size() << " triangles, "

@@ -55,7 +55,8 @@ class QuadEdge {
   }
 
   //> quadedge-algebra
-  /// The quarter-edge turned a quarter turn counter-clockwise (the dual, right to left face).
+  /// The quarter-edge turned a quarter turn counter-clockwise (the dual, right to left
+  /// face).
   static Edge rot(Edge e) { return (e & ~3u) | ((e + 1) & 3u); }
   /// The same edge, reversed.
   static Edge sym(Edge e) { return e ^ 2u; }
