@@ -47,13 +47,17 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
   if (S.empty()) return;  // the case the seed forgets
   const ChartOrder<K> order{chart};
   std::size_t h = static_cast<std::size_t>(-1);
-  if (chart.front) {  // farthest from the line a b: extreme in the direction of b − a turned right
-    const Point &A = P[a], &B = P[b];  // rounded: any direction will do, if finite
+  // farthest from the line a b: extreme in the direction of b − a turned right
+  if (chart.front) {
+    // rounded: any direction will do, if finite
+    const Point &A = P[a], &B = P[b];
     const double dx = B.x() * A.w() - A.x() * B.w(), dy = B.y() * A.w() - A.y() * B.w();
     if (std::isfinite(dx) && std::isfinite(dy) && (dx != 0 || dy != 0)) {
       const Point d(0, dx, dy);
       h = extreme_of<K>(P, S, a, b, order,
-                        [&](const Point& p, const Point& q) { return -K::orient(p, q, d); });
+                        [&](const Point& p, const Point& q) {
+                          return -K::orient(p, q, d);
+                        });
     }
   }
   // Extreme in x, −x, y, −y.
