@@ -162,7 +162,7 @@ void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>
 //> delaunay
 /// The Delaunay triangulation of points of T² with the predicates of kernel K; see the file
 /// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
-/// not all in front. Throws `Undefined` for a point on Ω among proper points (not implemented),
+/// not all in front. Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
 /// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
 template <class K = DelaunayKernel>
 Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {

@@ -25,10 +25,11 @@
 /// a₁ → a₂ (counter-clockwise around F) and the current back owner b, or (b₁, b₂, a) for the
 /// drawn hull edge b̄₁ → b̄₂ and the current front owner a. Walking u once around the circle
 /// merges the two sequences of hull edges by the angle of their normals (an exact merge of
-/// directions: `detail::cross_of_differences`, angle.hpp), so the band closes up between the two hulls.
+/// directions: `detail::cross_of_differences`, angle.hpp), so the band closes up between the
+/// two hulls.
 /// The disk of each face — the points nearer to its Voronoi vertex than its vertices — is the
-/// inside of the kernel's `in_circle` (incircle.hpp): the Euclidean disk for one-sided faces, for
-/// a band face the lune between the line a₁ a₂ (front) and its parallel through b (back).
+/// kernel's `in_circle` (incircle.hpp): the Euclidean disk for one-sided faces, for a band face
+/// the lune between the line a₁ a₂ (front) and its parallel through b (back).
 ///
 /// **Properties, with proofs.**
 ///  1. *Empty disks.* Every face's disk holds no site strictly (and in general position only
@@ -56,17 +57,41 @@
 ///     contain any generic point. The tests count it at random points, exactly (orient), and
 ///     find 1: the triangles tile the sphere (or the hull, with v∞).
 ///
-/// **Not implemented.** Points on Ω together with proper points (throws `Undefined`): by the
-/// distances of §4.3.1 a site on Ω is nearer than no proper site to any proper point, so its
-/// Voronoi cell is an arc of Ω whose extent the angle rule makes depend on the origin; its dual
-/// needs a convention this file does not choose. All points on Ω are collinear (they lie on the
-/// line Ω): dimension 1, no triangle, like any collinear input. A flat face without an antipodal
-/// pair (a back site exactly on the line of a front hull edge, or the converse) throws `Undefined`.
-/// Cost: two planar triangulations and a merge of the hulls, O(n log n).
+/// **Sites on Ω** (Z, directions). Seen from a proper point every site on its own side is
+/// nearer than any site on Ω, so (1) still divides each hemisphere that holds sites. On Ω the
+/// distance between two directions is their angle (seed 000, §4.3.1, figure 4.15) and a proper
+/// site is as far as the lunes of incircle.hpp say: 90°. So a point [0, u] of Ω belongs to the
+/// site of Z nearest in angle when that angle is below 90°, and to the front and back owners
+/// of (2) otherwise — the band survives only in the gaps of Z wider than π. The dual (built by
+/// delaunay_ring.hpp in one sweep of u): the planar triangulations of F and B; a face (a₂, a₁, z)
+/// for each front hull edge whose normal z owns, (b₁, b₂, z) likewise behind; for consecutive
+/// sites z₁, z₂ of Z less than π apart the faces (z₁, z₂, a) and (z₂, z₁, b) with a, b the
+/// owners at the middle of the arc; at each end of a gap wider than π a face (a, z, b); and the
+/// band in the gaps. Their disks are `in_face_disk` (face_disk.hpp): the kernel's lunes, whose
+/// ties on Ω (every site on the open half of Ω of a face (a₁, a₂, z) is *on* its circle) the
+/// angle breaks, and for (z₁, z₂, a) the lune centred at the middle of the arc. Property 1
+/// holds for them as for the band: a face's disk is what its Voronoi vertex sees nearer than its
+/// vertices, and each vertex is an owner there. It is also the plane's answer: with every site
+/// of Z replaced by a front point at one common radius t along its direction, the planar
+/// Delaunay triangulation has the same triangles for t large (test_delaunay_omega.cpp).
+/// *Undefined.* When F or B is empty and Z lies in no open half of Ω, the empty hemisphere has
+/// no site of its own: it would be divided among the sites of Z by angles seen from a proper
+/// point (seed 000, figure 4.16), which change with the origin, and its faces would have three
+/// vertices on Ω, all collinear. `delaunay` throws `Undefined` naming three of those sites (or
+/// an antipodal pair). When Z lies in an open half, the sites lie in an open hemisphere and the
+/// empty side's owner is v∞: those faces are the infinite ones. All points on Ω are collinear
+/// (they lie on the line Ω): dimension 1, no triangle, like any collinear input. A flat face
+/// without an antipodal pair (a tie: a back site exactly on the line of a front hull edge, a
+/// hull edge parallel to a site of Z) throws `Undefined`.
+/// **Cost.** Two planar triangulations, whose arrays are copied into the result (the back one
+/// mirrored), and a sweep of the hulls and of Z: O(n log n). Only the faces touching Ω are
+/// linked through a hash map, O(hull + |Z|).
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -77,6 +102,7 @@
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/delaunay_ring.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::detail {
@@ -94,76 +120,150 @@ inline bool all_collinear_t2(std::span<const Point> pts) {
   return true;
 }
 
-/// The counter-clockwise boundary of a planar triangulation of front points as a cycle of
-/// vertices, starting at a strict corner: the hull for dimension 2, p₀ … p_m … p₁ along the line
-/// for dimension 1, the one vertex for dimension 0.
-inline std::vector<Triangulation::Index> boundary_cycle(const Triangulation& t) {
+/// The points of Ω among `input` (indices `omega`) sorted counter-clockwise by direction from
+/// (1, 0), each direction once: the later equal points are recorded as duplicates in `tr`.
+inline std::vector<Triangulation::Index> omega_order(std::span<const Point> input,
+                                                     std::vector<Triangulation::Index> omega, Triangulation& tr) {
   using Index = Triangulation::Index;
-  std::vector<Index> c;
-  if (t.dimension() == 2) {
-    std::unordered_map<Index, Index> next;
-    for (auto [a, b] : t.hull_edges()) next[a] = b;
-    Index v = t.hull_edges().front().first;
-    for (std::size_t k = 0; k < next.size(); ++k, v = next[v]) c.push_back(v);
-    const auto& p = t.points();
-    const std::size_t k = c.size();
-    std::size_t s = 0;  // a corner: the edges before and after it are not parallel
-    while (cross_of_differences(p[c[(s + k - 1) % k]], p[c[s]], p[c[s]], p[c[(s + 1) % k]]) == ZERO) ++s;
-    std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(s), c.end());
-    return c;
-  }
-  std::vector<char> dropped(t.points().size(), 0);
-  for (auto [d, k] : t.duplicates()) dropped[d] = 1;
-  for (Index v = 0; v < t.points().size(); ++v)
-    if (!dropped[v]) c.push_back(v);
-  std::sort(c.begin(), c.end(), [&](Index a, Index b) { return compare_xy(t.point(a), t.point(b)) == NEGATIVE; });
-  for (std::size_t m = c.size() - 1; m-- > 1;) c.push_back(c[m]);
-  return c;
+  auto half = [&](Index a) { return input[a].y() > 0 || (input[a].y() == 0 && input[a].x() > 0) ? 0 : 1; };
+  auto cmp = [&](Index a, Index b) {  // NEGATIVE: a's direction first
+    if (half(a) != half(b)) return half(a) < half(b) ? NEGATIVE : POSITIVE;
+    return -cross_omega(input[a], input[b]);
+  };
+  std::sort(omega.begin(), omega.end(), [&](Index a, Index b) {
+    const Sign s = cmp(a, b);
+    return s != ZERO ? s == NEGATIVE : a < b;
+  });
+  std::vector<Index> z;
+  for (Index a : omega)
+    if (!z.empty() && cmp(z.back(), a) == ZERO)
+      tr.add_duplicate(a, z.back());
+    else
+      z.push_back(a);
+  return z;
 }
 
-/// The band faces between the front boundary `fc` (indices into `fp`) and the drawn back
-/// boundary `bc` (into `bp`, the antipodes of the back points), as (side, index) vertex triples
-/// encoded by `vf` and `vb` (which map a front or back index to the output vertex index).
-template <class VF, class VB>
-void band_faces(const std::vector<Point>& fp, const std::vector<Triangulation::Index>& fc, const std::vector<Point>& bp,
-                const std::vector<Triangulation::Index>& bc, VF vf, VB vb,
-                std::vector<std::array<Triangulation::Index, 3>>& out) {
-  const std::size_t k = fc.size(), l = bc.size();
-  const std::size_t ke = k >= 2 ? k : 0, le = l >= 2 ? l : 0;
-  // Event directions: front edge i is fc[i] → fc[i+1]; back edge j's break is at the direction
-  // of bc[j+1] → bc[j] (the outer normal of the drawn edge, negated, turned like the edge).
-  struct Dir {
-    const Point *from, *to;
+/// Throws `Undefined` when the sites on Ω (sorted, `z`) lie in no open half of Ω while one side
+/// of T² holds no site: that hemisphere would be divided among the sites on Ω by angles seen
+/// from a proper point, which depend on the origin (delaunay_t2.hpp).
+inline void check_empty_side(std::span<const Point> input, const std::vector<Triangulation::Index>& z,
+                             const char* side) {
+  const std::size_t k = z.size();
+  auto gap_over_pi = [&](std::size_t j) {  // the arc from z[j] to z[j+1] exceeds π
+    const Sign c = cross_omega(input[z[j]], input[z[(j + 1) % k]]);
+    return c == NEGATIVE || (c == ZERO && dot_omega(input[z[j]], input[z[(j + 1) % k]]) == POSITIVE);
   };
-  auto front_dir = [&](std::size_t i) { return Dir{&fp[fc[i]], &fp[fc[(i + 1) % k]]}; };
-  auto back_dir = [&](std::size_t j) { return Dir{&bp[bc[(j + 1) % l]], &bp[bc[j]]}; };
-  const Dir ref = ke > 0 ? front_dir(0) : back_dir(0);
-  auto half = [&](const Dir& v) {
-    const Sign c = cross_of_differences(*ref.from, *ref.to, *v.from, *v.to);
-    return c == POSITIVE || (c == ZERO && dot_of_differences(*ref.from, *ref.to, *v.from, *v.to) == POSITIVE) ? 0 : 1;
-  };
-  auto compare = [&](const Dir& a, const Dir& b) {  // the angles from ref, in [0, 2π)
-    const int ha = half(a), hb = half(b);
-    if (ha != hb) return ha < hb ? NEGATIVE : POSITIVE;
-    return -cross_of_differences(*a.from, *a.to, *b.from, *b.to);
-  };
-  std::size_t j0 = 0;  // the back events in increasing angle start after the one strict descent
-  for (std::size_t j = 0; j < le; ++j)
-    if (compare(back_dir((j + le - 1) % le), back_dir(j)) == POSITIVE) j0 = j;
-  Triangulation::Index v = fc[0], w = bc[le > 0 ? j0 : 0];
-  for (std::size_t i = 0, m = 0; i < ke || m < le;) {
-    const std::size_t j = (j0 + m) % std::max<std::size_t>(le, 1);
-    if (i < ke && (m == le || compare(front_dir(i), back_dir(j)) != POSITIVE)) {
-      const Triangulation::Index a = fc[i], b = fc[(i + 1) % k];
-      out.push_back({vf(b), vf(a), vb(w)});
-      v = b;
-      ++i;
-    } else {
-      const Triangulation::Index a = bc[j], b = bc[(j + 1) % l];
-      out.push_back({vb(a), vb(b), vf(v)});
-      w = b;
-      ++m;
+  for (std::size_t j = 0; j < k; ++j)
+    if (gap_over_pi(j)) return;
+  std::string names;  // an antipodal pair, or three points around Ω
+  for (std::size_t j = 0; j < k && names.empty(); ++j)
+    if (cross_omega(input[z[j]], input[z[(j + 1) % k]]) == ZERO)
+      names = std::to_string(z[j]) + " and " + std::to_string(z[(j + 1) % k]) + " (antipodal)";
+  if (names.empty()) {
+    std::size_t a = 1;  // the last point less than π after z[0]
+    while (a + 1 < k && cross_omega(input[z[0]], input[z[a + 1]]) == POSITIVE) ++a;
+    names = std::to_string(z[0]) + ", " + std::to_string(z[a]) + " and " + std::to_string(z[(a + 1) % k]);
+  }
+  throw Undefined("delaunay: the points " + names + " on Omega lie in no open half of it and no point is on the " +
+                  side + " side: that hemisphere has no Delaunay triangulation independent of the origin");
+}
+
+/// The faces touching Ω with v∞ in place of the clockwise ones (property 3 of delaunay_t2.hpp):
+/// an edge between a clockwise face and a counter-clockwise one (or a planar triangle) becomes
+/// a hull edge with its infinite triangle. Throws `Undefined` for a flat face without an
+/// antipodal pair.
+inline std::vector<std::array<Triangulation::Index, 3>> replace_clockwise(
+    std::span<const Point> input, std::vector<std::array<Triangulation::Index, 3>> faces) {
+  using Index = Triangulation::Index;
+  constexpr Index inf = Triangulation::infinite;
+  std::vector<char> clockwise(faces.size(), 0);
+  bool any = false;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& t = faces[f];
+    if (t[0] == inf || t[1] == inf || t[2] == inf) continue;
+    const Point &a = input[t[0]], &b = input[t[1]], &c = input[t[2]];
+    const Sign o = orient(a, b, c);
+    if (o == ZERO && !(a == antipode(b) || b == antipode(c) || c == antipode(a)))
+      throw Undefined("delaunay: the points " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+                      std::to_string(t[2]) + " make a flat face without an antipodal pair (a tie on Omega)");
+    if (o == NEGATIVE) clockwise[f] = any = true;
+  }
+  if (!any) return faces;
+  std::unordered_map<std::uint64_t, std::size_t> owner;  // the faces touching Ω only: O(hull)
+  auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int i = 0; i < 3; ++i) owner[key(faces[f][i], faces[f][(i + 1) % 3])] = f;
+  std::vector<std::array<Index, 3>> kept;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!clockwise[f]) {
+      kept.push_back(faces[f]);
+      continue;
     }
+    for (int i = 0; i < 3; ++i) {
+      const Index x = faces[f][i], y = faces[f][(i + 1) % 3];
+      const auto it = owner.find(key(y, x));  // absent: a planar triangle, never clockwise
+      if (it == owner.end() || !clockwise[it->second]) kept.push_back({x, y, inf});
+    }
+  }
+  return kept;
+}
+
+//> delaunay-t2-copy
+/// Appends the triangles of the planar triangulation `t` to the arrays (v, n): vertex u becomes
+/// index[u], `mirror` reverses each triangle (slots 1 and 2 swap: the back side), the infinite
+/// triangles are left out unless `infinite`. Twins inside t are copied; a half-edge whose twin
+/// is left out is recorded in `open` under its directed edge, for the faces across Ω.
+inline void append_planar(const Triangulation& t, const std::vector<Triangulation::Index>& index,
+                          bool mirror, bool infinite, std::vector<Triangulation::Index>& v,
+                          std::vector<Triangulation::Index>& n,
+                          std::unordered_map<std::uint64_t, Triangulation::Index>& open) {
+  using Index = Triangulation::Index;
+  const int slot[3] = {0, mirror ? 2 : 1, mirror ? 1 : 2};
+  std::vector<Index> id(t.size(), Triangulation::none);
+  Index next = static_cast<Index>(v.size() / 3);
+  for (Index s = 0; s < t.size(); ++s)
+    if (infinite || !t.is_infinite(s)) id[s] = next++;
+  v.resize(3 * std::size_t(next));
+  n.resize(3 * std::size_t(next));
+  for (Index s = 0; s < t.size(); ++s) {
+    if (id[s] == Triangulation::none) continue;
+    for (int i = 0; i < 3; ++i) {
+      const Index u = t.vertex(s, i);
+      v[3 * id[s] + slot[i]] = u == Triangulation::infinite ? u : index[u];
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Index e = t.twin(s, i), h = 3 * id[s] + slot[i];
+      if (id[e / 3] != Triangulation::none) {
+        n[h] = 3 * id[e / 3] + slot[e % 3];
+      } else {
+        const Index a = v[3 * id[s] + (slot[i] + 1) % 3], b = v[3 * id[s] + (slot[i] + 2) % 3];
+        open[(std::uint64_t(a) << 32) | b] = h;
+      }
+    }
+  }
+}
+//< delaunay-t2-copy
+
+/// Appends `faces` to (v, n) and links each of their half-edges with its opposite: another of
+/// `faces` or a half-edge of `open`.
+inline void append_linked(const std::vector<std::array<Triangulation::Index, 3>>& faces,
+                          std::vector<Triangulation::Index>& v, std::vector<Triangulation::Index>& n,
+                          std::unordered_map<std::uint64_t, Triangulation::Index>& open) {
+  using Index = Triangulation::Index;
+  auto key = [](Index a, Index b) { return (std::uint64_t(a) << 32) | b; };
+  const Index first = static_cast<Index>(v.size());
+  for (const auto& t : faces)
+    for (int i = 0; i < 3; ++i) {
+      v.push_back(t[i]);
+      n.push_back(Triangulation::none);
+      open[key(t[(i + 1) % 3], t[(i + 2) % 3])] = static_cast<Index>(v.size() - 1);
+    }
+  for (Index h = first; h < v.size(); ++h) {
+    const Index t = h / 3, i = h % 3;
+    const auto it = open.find(key(v[3 * t + (i + 2) % 3], v[3 * t + (i + 1) % 3]));
+    if (it == open.end()) throw std::logic_error("delaunay_t2: a face across Omega has no neighbour");
+    n[h] = it->second;
+    n[it->second] = h;
   }
 }
 
@@ -173,9 +273,9 @@ void band_faces(const std::vector<Point>& fp, const std::vector<Triangulation::I
 template <class K>
 Triangulation delaunay_t2(std::span<const Point> input, const K& kernel) {
   using Index = Triangulation::Index;
-  using Tri = std::array<Index, 3>;
-  std::vector<Index> front, back;
-  for (Index k = 0; k < input.size(); ++k) (input[k].w() > 0 ? front : back).push_back(k);
+  std::vector<Index> front, back, omega;
+  for (Index k = 0; k < input.size(); ++k)
+    (input[k].w() > 0 ? front : input[k].w() < 0 ? back : omega).push_back(k);
   Triangulation tr(std::vector<Point>(input.begin(), input.end()));
   if (all_collinear_t2(input)) {  // dimension ≤ 1: only the duplicates to find
     std::vector<Index> order(input.size());
@@ -195,57 +295,35 @@ Triangulation delaunay_t2(std::span<const Point> input, const K& kernel) {
     tr.finish();
     return tr;
   }
-  for (Index k : back)
-    if (input[k].w() == 0)
-      throw Undefined("delaunay: point " + std::to_string(k) + " = " + to_string(input[k]) +
-                      " is on Omega together with proper points: not implemented (see delaunay_t2.hpp)");
+  const std::vector<Index> z = omega_order(input, omega, tr);
+  if (!z.empty() && (front.empty() || back.empty()))
+    check_empty_side(input, z, front.empty() ? "front" : "back");
   std::vector<Point> fp, bp;  // the front points, and the antipodes of the back ones (drawn B̄)
+  fp.reserve(front.size());
+  bp.reserve(back.size());
   for (Index k : front) fp.push_back(input[k]);
   for (Index k : back) bp.push_back(antipode(input[k]));
   const Triangulation df = delaunay_with(std::span<const Point>(fp), kernel);
   const Triangulation db = delaunay_with(std::span<const Point>(bp), kernel);
   for (auto [d, k] : df.duplicates()) tr.add_duplicate(front[d], front[k]);
   for (auto [d, k] : db.duplicates()) tr.add_duplicate(back[d], back[k]);
-  auto vf = [&](Index v) { return front[v]; };
-  auto vb = [&](Index v) { return v == Triangulation::infinite ? v : back[v]; };
-  std::vector<Tri> faces;
-  for (Index t = 0; t < db.size(); ++t)  // mirrored: reversed to turn counter-clockwise in T²
-    if (front.empty() || !db.is_infinite(t)) faces.push_back({vb(db.vertex(t, 0)), vb(db.vertex(t, 2)), vb(db.vertex(t, 1))});
-  if (!front.empty()) {
-    for (const auto& t : df.finite_triangles()) faces.push_back({vf(t[0]), vf(t[1]), vf(t[2])});
-    const std::size_t first_band = faces.size();
-    band_faces(fp, boundary_cycle(df), bp, boundary_cycle(db), vf, vb, faces);
-    std::vector<char> clockwise(faces.size(), 0);
-    bool any = false;
-    for (std::size_t f = first_band; f < faces.size(); ++f) {
-      const Point &a = input[faces[f][0]], &b = input[faces[f][1]], &c = input[faces[f][2]];
-      const Sign o = orient(a, b, c);
-      if (o == ZERO && !(a == antipode(b) || b == antipode(c) || c == antipode(a)))
-        throw Undefined("delaunay: points " + std::to_string(faces[f][0]) + ", " + std::to_string(faces[f][1]) + ", " +
-                        std::to_string(faces[f][2]) +
-                        " on both sides make a flat face without an antipodal pair: not implemented");
-      if (o == NEGATIVE) clockwise[f] = any = true;
-    }
-    if (any) {  // a hull exists: v∞ replaces the clockwise faces (property 3)
-      std::unordered_map<std::uint64_t, std::size_t> owner;
-      auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
-      for (std::size_t f = 0; f < faces.size(); ++f)
-        for (int i = 0; i < 3; ++i) owner[key(faces[f][i], faces[f][(i + 1) % 3])] = f;
-      std::vector<Tri> kept;
-      for (std::size_t f = 0; f < faces.size(); ++f) {
-        if (!clockwise[f]) {
-          kept.push_back(faces[f]);
-          continue;
-        }
-        for (int i = 0; i < 3; ++i) {
-          const Index x = faces[f][i], y = faces[f][(i + 1) % 3];
-          if (!clockwise[owner.at(key(y, x))]) kept.push_back({x, y, Triangulation::infinite});
-        }
-      }
-      faces = std::move(kept);
-    }
+  // Copy the planar triangles (the back ones mirrored: counter-clockwise in T²), then the faces
+  // touching Ω, linked to the hull edges left open.
+  std::vector<Index> v, n;
+  v.reserve(3 * (df.size() + db.size() + 2 * z.size() + 4));
+  n.reserve(v.capacity());
+  std::unordered_map<std::uint64_t, Index> open;
+  const bool back_only = front.empty() && z.empty();  // the mirror of db, v∞ included
+  if (df.dimension() == 2) append_planar(df, front, false, false, v, n, open);
+  if (db.dimension() == 2) append_planar(db, back, true, back_only, v, n, open);
+  if (!back_only) {
+    RingSide fs{&fp, front.empty() ? std::vector<Index>{} : boundary_cycle(df), front};
+    RingSide bs{&bp, back.empty() ? std::vector<Index>{} : boundary_cycle(db), back};
+    std::vector<std::array<Index, 3>> ring;
+    ring_faces(fs, bs, tr.points(), z, ring);
+    append_linked(replace_clockwise(input, std::move(ring)), v, n, open);
   }
-  tr.assemble(faces);
+  tr.assign(std::move(v), std::move(n));
   tr.finish();
   return tr;
 }

@@ -158,7 +158,8 @@ class Triangulation {
   void assemble(const std::vector<std::array<Index, 3>>& triangles);
   /// Replaces the triangles by the flat arrays `vertices` (3 per triangle) and `twins` (the
   /// half-edge across each slot, linked by the caller as in the file comment); sets dimension 2.
-  /// Used by the constructions built on another structure (divide.hpp, from the quad-edge).
+  /// Used by the constructions built on another structure (divide.hpp, from the quad-edge;
+  /// delaunay_t2.hpp, copying the planar triangulations of the two sides).
   void assign(std::vector<Index> vertices, std::vector<Index> twins) {
     v_ = std::move(vertices);
     n_ = std::move(twins);
