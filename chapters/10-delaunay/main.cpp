@@ -293,6 +293,15 @@ void figures(const std::filesystem::path& dir) {
                                   Point::cartesian(0, 0), t2::antipode(Point::cartesian(1.5, -1))};
     pv.half_width = 2.5;
     t2_figure(A, "antipode", pv);
+    // Section 8: front points, back points and four directions on Ω (data/examples/omega.t2).
+    const std::vector<Point> Z = {
+        Point::cartesian(0, 0),        Point::cartesian(0.6, 0.2),     Point::cartesian(-0.3, 0.5),
+        Point::cartesian(0.2, -0.6),   Point::cartesian(-0.5, -0.3),   Point::cartesian(0.1, 0.3),
+        Point(-1, -0.8, -0.7),         Point(-1, 0.7, -0.6),           Point(-1, -0.5, 0.8),
+        Point(-1, 0.2, 0.9),           Point(-1, -0.9, 0.1),           Point::at_infinity(1, 0.36),
+        Point::at_infinity(0.5, 0.87), Point::at_infinity(-0.17, 1),   Point::at_infinity(-0.87, 0.5)};
+    pv.half_width = 1.6;
+    t2_figure(Z, "omega", pv);
   }
   std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
 }
