@@ -2,8 +2,11 @@
 -- Metadata set by the builder: srcdir (folder of the page's source, relative to the repository
 -- root; absent for generated pages), reporel (the repository root relative to the output folder)
 -- and apimap (a file of "name<TAB>href" lines read from the Doxygen tag file).
---  * links to chapters/NN-slug/chapter.md become NN-slug.html, links to
---    exercises/NN-slug/README.md become exercises-NN-slug.html;
+--  * links to chapters/NN-slug/chapter.md (or to a later part of it, chapter-K.md) become
+--    NN-slug.html, links to exercises/NNx-slug/README.md become exercises-NNx-slug.html;
+--  * a paragraph "Continued in [...](chapter-2.md)." (a link to another part of the same
+--    chapter) is for readers of the source files: the book, which makes one page of all the
+--    parts, drops it;
 --  * figures/... stay figures/... (the builder copies the figures next to the pages);
 --  * any other relative link points to the file in the repository;
 --  * inline code naming a library entity (`t2::orient`, `t2::orient(p, q, r)`) links to the API.
@@ -54,9 +57,9 @@ local function rewrite(target)
   if path == nil or path == "" then return target end
   local p = resolve(srcdir, path)
   if p == nil then return target end
-  local ch = p:match("^chapters/(%d%d%-[^/]+)/chapter%.md$")
+  local ch = p:match("^chapters/(%d%d%-[^/]+)/chapter%.md$") or p:match("^chapters/(%d%d%-[^/]+)/chapter%-%d+%.md$")
   if ch then return ch .. ".html" .. frag end
-  local ex = p:match("^exercises/(%d%d%-[^/]+)/README%.md$")
+  local ex = p:match("^exercises/(%d%d%l?%-[^/]+)/README%.md$")
   if ex then return "exercises-" .. ex .. ".html" .. frag end
   if p:match("^figures/") then return p .. frag end
   return reporel .. "/" .. p .. frag
@@ -81,8 +84,19 @@ local function lift_title(doc)
   return doc
 end
 
+-- "Continued in [part 2](chapter-2.md)." (possibly emphasized): a paragraph that starts with
+-- "Continued in" and links only to another part of the page's own chapter.
+local function part_link_only(para)
+  if srcdir == nil or not srcdir:match("^chapters/") then return false end
+  if not pandoc.utils.stringify(para):match("^Continued in ") then return false end
+  local targets = {}
+  pandoc.walk_block(para, { Link = function(l) table.insert(targets, l.target) end })
+  return #targets == 1 and (targets[1] == "chapter.md" or targets[1]:match("^chapter%-%d+%.md$") ~= nil)
+end
+
 return {
   { Meta = load_meta },
+  { Para = function(p) if part_link_only(p) then return {} end end },
   { Pandoc = lift_title },
   { -- code that is already the text of a link stays as it is
     Link = function(l)

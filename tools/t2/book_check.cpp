@@ -14,7 +14,7 @@ namespace t2cli::book {
 std::vector<std::string> chapter_markdown_files(const fs::path& root) {
   std::vector<std::string> out;
   for (const auto& c : find_chapters(root))
-    if (c.has_text) out.push_back("chapters/" + c.folder() + "/chapter.md");
+    for (const auto& part : c.parts) out.push_back("chapters/" + c.folder() + "/" + part);
   return out;
 }
 
@@ -51,11 +51,20 @@ std::vector<Problem> check_listing_widths(const std::string& rel, const Document
   return ps;
 }
 
-// The quoted output of chapter c (its ```text blocks) against what its program prints.
-std::vector<Problem> check_program_output(const Chapter& c, const std::string& rel, const Document& doc,
+// One part of a chapter's text, read and parsed.
+struct Part {
+  std::string rel;  // chapters/NN-slug/chapter-K.md
+  Document doc;
+};
+
+// The quoted output of chapter c (the ```text blocks of all its parts) against what its program
+// prints; the program runs once.
+std::vector<Problem> check_program_output(const Chapter& c, const std::vector<Part>& parts,
                                           const fs::path& programs, int* outputs) {
-  const auto blocks = output_blocks(doc);
-  if (!c.has_program || blocks.empty()) return {};
+  std::size_t quoted = 0;
+  for (const auto& p : parts) quoted += output_blocks(p.doc).size();
+  if (!c.has_program || quoted == 0) return {};
+  const std::string rel = parts.front().rel;
   const std::string name = "chapter_" + c.number;
   const fs::path exe = programs / name;
   if (!fs::exists(exe))
@@ -73,8 +82,35 @@ std::vector<Problem> check_program_output(const Chapter& c, const std::string& r
                                           : "exit status " + std::to_string(r.exit_code);
     return {{rel + ":1", name + " failed (" + status + "): its output blocks are unchecked; it said: " + r.err}};
   }
-  if (outputs) *outputs += static_cast<int>(blocks.size());
-  return check_outputs(rel, blocks, r.out, name);
+  if (outputs) *outputs += static_cast<int>(quoted);
+  std::vector<Problem> ps;
+  for (const auto& p : parts) {
+    const auto more = check_outputs(p.rel, output_blocks(p.doc), r.out, name);
+    ps.insert(ps.end(), more.begin(), more.end());
+  }
+  return ps;
+}
+
+// The parts of a chapter's text are chapter.md, chapter-2.md, chapter-3.md ... with no gap, and
+// only the first has the chapter's title (the book reads them as one document).
+std::vector<Problem> check_parts(const Chapter& c, const std::vector<Part>& parts,
+                                 const std::vector<std::string>& texts) {
+  std::vector<Problem> ps;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string want = part_file(k + 1);
+    if (c.parts[k] != want) {
+      ps.push_back({parts[k].rel + ":1", "the parts of a chapter are chapter.md, chapter-2.md, chapter-3.md, ... "
+                                         "with no gap: " + want + " is missing (the part after " +
+                                         c.parts[k - 1] + ")"});
+      break;
+    }
+    const bool titled = texts[k].rfind("# ", 0) == 0;
+    if (k == 0 && !titled) ps.push_back({parts[k].rel + ":1", "the first line must be the chapter title, '# Title'"});
+    if (k > 0 && titled)
+      ps.push_back({parts[k].rel + ":1", "only chapter.md has the chapter's '# Title'; its later parts start "
+                                         "with a section ('## ...'), since the book reads them as one page"});
+  }
+  return ps;
 }
 
 }  // namespace
@@ -86,16 +122,20 @@ std::vector<Problem> check_book(const fs::path& root, int* listings, const fs::p
   auto add = [&ps](const std::vector<Problem>& more) { ps.insert(ps.end(), more.begin(), more.end()); };
   for (const auto& c : find_chapters(root)) {
     if (!c.has_text) continue;
-    const std::string rel = "chapters/" + c.folder() + "/chapter.md";
-    const std::string text = t2::read_file(root / rel);
-    const auto r = sync_listings(root, rel, text);
-    if (listings) *listings += r.listings;
-    add(r.problems);
-    if (text.rfind("# ", 0) != 0) ps.push_back({rel + ":1", "the first line must be the chapter title, '# Title'"});
-    const Document doc = parse_markdown(text, rel);
-    add(check_links(root, rel, doc));
-    add(check_listing_widths(rel, doc));
-    if (!programs.empty()) add(check_program_output(c, rel, doc, programs, outputs));
+    std::vector<Part> parts;
+    std::vector<std::string> texts;
+    for (const auto& file : c.parts) {
+      const std::string rel = "chapters/" + c.folder() + "/" + file;
+      texts.push_back(t2::read_file(root / rel));
+      const auto r = sync_listings(root, rel, texts.back());
+      if (listings) *listings += r.listings;
+      add(r.problems);
+      parts.push_back({rel, parse_markdown(texts.back(), rel)});
+      add(check_links(root, rel, parts.back().doc));
+      add(check_listing_widths(rel, parts.back().doc));
+    }
+    add(check_parts(c, parts, texts));
+    if (!programs.empty()) add(check_program_output(c, parts, programs, outputs));
   }
   return ps;
 }

@@ -65,7 +65,42 @@ bool parse_marker(const std::string& line, char& kind, std::string& name) {
   return !name.empty() && name.find_first_of(" \t") == std::string::npos;
 }
 
+// chapter.md, then chapter-K.md (K >= 2) in the order of K; nothing without chapter.md.
+std::vector<std::string> text_parts(const fs::path& dir) {
+  if (!fs::exists(dir / "chapter.md")) return {};
+  static const std::regex part_re(R"(^chapter-([0-9]+)\.md$)");
+  std::vector<std::pair<unsigned long, std::string>> more;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    std::smatch m;
+    if (e.is_regular_file() && std::regex_match(name, m, part_re)) more.emplace_back(std::stoul(m[1]), name);
+  }
+  std::sort(more.begin(), more.end());
+  std::vector<std::string> out{"chapter.md"};
+  for (const auto& [k, name] : more) out.push_back(name);
+  return out;
+}
+
+// exercises/NN-slug and exercises/NNx-slug (x one letter) that hold a README.md, sorted.
+std::vector<std::string> exercise_folders(const fs::path& root, const std::string& number) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  if (!fs::is_directory(root / "exercises", ec)) return out;
+  static const std::regex folder_re(R"(^([0-9][0-9])[a-z]?-[a-z0-9][a-z0-9-]*$)");
+  for (const auto& e : fs::directory_iterator(root / "exercises")) {
+    const std::string name = e.path().filename().string();
+    std::smatch m;
+    if (e.is_directory() && std::regex_match(name, m, folder_re) && m[1] == number &&
+        fs::exists(e.path() / "README.md"))
+      out.push_back(name);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace
+
+std::string part_file(std::size_t k) { return k <= 1 ? "chapter.md" : "chapter-" + std::to_string(k) + ".md"; }
 
 std::vector<Chapter> find_chapters(const fs::path& root) {
   std::vector<Chapter> out;
@@ -84,6 +119,8 @@ std::vector<Chapter> find_chapters(const fs::path& root) {
     c.dir = e.path();
     c.has_text = fs::exists(c.dir / "chapter.md");
     c.has_program = fs::exists(c.dir / "main.cpp");
+    c.parts = text_parts(c.dir);
+    c.exercises = exercise_folders(root, c.number);
     if (c.has_text) {
       for (const auto& l : split_lines(t2::read_file(c.dir / "chapter.md"))) {
         if (l.rfind("# ", 0) == 0) {

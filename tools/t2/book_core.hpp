@@ -12,6 +12,11 @@ namespace t2cli::book {
 namespace fs = std::filesystem;
 
 /// One folder chapters/NN-slug/.
+///
+/// Its text is chapter.md, continued (so that no file outgrows 500 lines) in chapter-2.md,
+/// chapter-3.md, ...: the parts are read in that order as one document, and the book makes one
+/// page of them. Its exercise sheets are every folder exercises/NN-* and exercises/NNx-* (one
+/// letter after the number: 01b, 01c, ...) that holds a README.md.
 struct Chapter {
   std::string number;  ///< "01"
   std::string slug;    ///< "t2-plane"
@@ -19,8 +24,17 @@ struct Chapter {
   std::string title;   ///< text of the first "# " heading of chapter.md ("" if none)
   bool has_text = false;     ///< chapter.md exists
   bool has_program = false;  ///< main.cpp exists
+  /// The files of its text in reading order ("chapter.md", "chapter-2.md", ...): chapter.md
+  /// first, then every chapter-K.md by K (gaps in K are reported by `t2 book check`); empty
+  /// when there is no chapter.md.
+  std::vector<std::string> parts;
+  /// Its exercise folders under exercises/ ("01-t2-plane", "01b-t1-order", ...), sorted.
+  std::vector<std::string> exercises;
   std::string folder() const { return number + "-" + slug; }  ///< "01-t2-plane"
 };
+
+/// The file name of part `k` (1-based) of a chapter's text: "chapter.md", "chapter-2.md", ...
+std::string part_file(std::size_t k);
 
 /// The repository root compiled into the tool (T2_SOURCE_DIR).
 fs::path default_root();
@@ -69,7 +83,8 @@ SyncResult sync_listings(const fs::path& root, const std::string& rel, const std
 /// three spaces in), its character in `ch`; 0 when the line is no fence.
 std::size_t fence_of(const std::string& line, char& ch);
 
-/// All chapter.md files of the repository (relative paths, sorted).
+/// Every part of the text of every chapter (relative paths: chapters/NN-slug/chapter.md,
+/// .../chapter-2.md, ...), chapter by chapter, each chapter's parts in reading order.
 std::vector<std::string> chapter_markdown_files(const fs::path& root);
 
 /// `t2 book check`: every problem of every chapter (empty when clean). With `programs` (a

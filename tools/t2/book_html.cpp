@@ -83,11 +83,11 @@ void copy_tree(const fs::path& from, const fs::path& to) {
   }
 }
 
-struct Page {
-  std::string file;   // "01-t2-plane.html"
-  std::string title;  // "The oriented projective plane"
-  std::string label;  // "Chapter 01"
-};
+// The page of the exercise folder "01b-t1-order": "exercises-01b-t1-order.html".
+std::string exercise_page(const std::string& folder) { return "exercises-" + folder + ".html"; }
+
+// How the book names that sheet: "01b" (the folder's name up to its first '-').
+std::string sheet_label(const std::string& folder) { return folder.substr(0, folder.find('-')); }
 
 }  // namespace
 
@@ -170,10 +170,11 @@ int build_book(const BuildOptions& o) {
   fs::copy_file(bookdir / "style.css", o.out / "style.css", fs::copy_options::overwrite_existing);
 
   const std::string reporel = rel(o.root, o.out);
-  auto pandoc = [&](const fs::path& input, const fs::path& output, const std::string& srcdir,
+  // One page from one or more markdown files (the parts of a chapter), read as one document.
+  auto pandoc = [&](const std::vector<fs::path>& inputs, const fs::path& output, const std::string& srcdir,
                     const std::string& pagetitle, const std::vector<std::pair<std::string, std::string>>& vars,
                     bool toc) {
-    std::vector<std::string> argv = {"pandoc", input.string(), std::string("--from=") + kPandocReader,
+    std::vector<std::string> argv = {"pandoc", std::string("--from=") + kPandocReader,
                                      "--to=html5", "--standalone", "--mathml", "--wrap=none",
                                      "--template=" + (bookdir / "template.html").string(),
                                      "--lua-filter=" + (bookdir / "book.lua").string(),
@@ -185,10 +186,11 @@ int build_book(const BuildOptions& o) {
     if (!srcdir.empty()) argv.push_back("--metadata=srcdir:" + srcdir);
     if (toc) argv.insert(argv.end(), {"--toc", "--toc-depth=2"});
     for (const auto& [k, v] : vars) argv.push_back("--variable=" + k + ":" + v);
+    for (const auto& in : inputs) argv.push_back(in.string());
     const int rc = run_program(argv);
     if (rc != 0)
       throw std::runtime_error(rc < 0 ? "cannot run pandoc (install the Debian package pandoc)"
-                                      : "pandoc failed on " + input.string());
+                                      : "pandoc failed on " + inputs.front().string());
     if (!o.quiet) fmt::print("  {}\n", output.string());
   };
 
@@ -209,17 +211,21 @@ int build_book(const BuildOptions& o) {
       vars.push_back({"next", chapters[i + 1].folder() + ".html"});
       vars.push_back({"next_title", html_escape(chapters[i + 1].number + " " + chapters[i + 1].title)});
     }
-    const fs::path ex = o.root / "exercises" / c.folder() / "README.md";
-    if (fs::exists(ex)) {
-      vars.push_back({"exercises", "exercises-" + c.folder() + ".html"});
-      pandoc(ex, o.out / ("exercises-" + c.folder() + ".html"), "exercises/" + c.folder(),
-             "Exercises of chapter " + c.number + " — t2",
+    // Every exercise sheet of the chapter: a page, and a link in the chapter's bar (a list
+    // variable: the template repeats the link once per sheet).
+    for (const auto& ex : c.exercises) {
+      vars.push_back({"exercises", fmt::format("<a class=\"exercises\" href=\"{}\">Exercises {}</a>",
+                                               exercise_page(ex), html_escape(sheet_label(ex)))});
+      pandoc({o.root / "exercises" / ex / "README.md"}, o.out / exercise_page(ex), "exercises/" + ex,
+             "Exercises " + sheet_label(ex) + " of chapter " + c.number + " — t2",
              {{"chapter_number", c.number}, {"up", c.folder() + ".html"}, {"up_title", html_escape(c.number + " " + title)}},
              false);
       ++pages;
     }
-    pandoc(c.dir / "chapter.md", o.out / (c.folder() + ".html"), "chapters/" + c.folder(),
-           c.number + " " + title + " — t2", vars, true);
+    std::vector<fs::path> parts;
+    for (const auto& part : c.parts) parts.push_back(c.dir / part);
+    pandoc(parts, o.out / (c.folder() + ".html"), "chapters/" + c.folder(), c.number + " " + title + " — t2", vars,
+           true);
     ++pages;
   }
 
@@ -236,8 +242,9 @@ int build_book(const BuildOptions& o) {
     const Chapter& c = chapters[i];
     listed[i] = true;
     md << "- " << c.number << " · [" << (c.title.empty() ? c.slug : c.title) << "](" << c.folder() << ".html)";
-    if (fs::exists(o.root / "exercises" / c.folder() / "README.md"))
-      md << " · [exercises](exercises-" << c.folder() << ".html)";
+    for (std::size_t k = 0; k < c.exercises.size(); ++k)
+      md << (k == 0 ? " · exercises " : ", ") << "[" << sheet_label(c.exercises[k]) << "]("
+         << exercise_page(c.exercises[k]) << ")";
     md << "\n";
   };
   for (const auto& p : parts) {
@@ -260,7 +267,7 @@ int build_book(const BuildOptions& o) {
     }
   if (!api.empty()) md << "\nThe [API reference](" << html_rel << "/index.html) documents every name of the library.\n";
   t2::update_file_atomically(work / "index.md", md.str());
-  pandoc(work / "index.md", o.out / "index.html", "", "t2 — the book", {{"contents", "1"}}, false);
+  pandoc({work / "index.md"}, o.out / "index.html", "", "t2 — the book", {{"contents", "1"}}, false);
   ++pages;
   return pages;
 }

@@ -43,16 +43,17 @@ int book_command(const BookArgs& a) {
     if (programs.empty() && fs::equivalent(a.root, book::default_root(), ec))
       programs = book::own_build_dir() / "bin";  // the programs were built from this root
     const auto ps = book::check_book(a.root, &listings, programs, &outputs);
-    const auto files = book::chapter_markdown_files(a.root);
+    std::size_t chapters = 0;
+    for (const auto& c : book::find_chapters(a.root)) chapters += c.has_text;
     if (!ps.empty()) {
       print_problems(ps);
       fmt::print(stderr, "t2 book check: {} problem(s) in {} chapter(s); `t2 book sync` rewrites listings from their source\n",
-                 ps.size(), files.size());
+                 ps.size(), chapters);
       return kFailed;
     }
     if (!a.quiet) {
       fmt::print("t2 book check: {} chapter(s), {} listing(s), all in sync, every figure and link exists\n",
-                 files.size(), listings);
+                 chapters, listings);
       if (programs.empty())
         fmt::print("t2 book check: quoted program output not checked (no --programs DIR for this root)\n");
       else
@@ -95,15 +96,19 @@ Action setup(CLI::App& app) {
       "--programs of check.\n"
       "\n"
       "build  Makes the HTML book with pandoc: a contents page by part, one page per chapter\n"
-      "       (chapters/NN-slug/chapter.md) with previous/next links, and one per exercise\n"
-      "       sheet. Math is MathML, figures are copied, library names in inline code link to\n"
-      "       the Doxygen reference (DIR/t2.tag and DIR/html; default: the docs/ folder of\n"
-      "       this build). Default output: <build>/book/index.html. Needs no server.\n"
-      "check  Fails (exit 1) when a listing differs from the source region it is cut from,\n"
-      "       when a marker //> NAME ... //< NAME is missing, or when a figure or link target\n"
-      "       does not exist, or when a line of a code block (```text output excepted) is\n"
-      "       over 90 columns and would scroll in the HTML book. Prints chapter:line, listing\n"
-      "       and the first differing line.\n"
+      "       (chapters/NN-slug/chapter.md and its later parts chapter-2.md, chapter-3.md ...\n"
+      "       read as one document) with previous/next links, and one page per exercise sheet\n"
+      "       (every exercises/NN-slug/ and exercises/NNx-slug/ with a README.md, linked from\n"
+      "       the contents and from its chapter). Math is MathML, figures are copied, library\n"
+      "       names in inline code link to the Doxygen reference (DIR/t2.tag and DIR/html;\n"
+      "       default: the docs/ folder of this build). Default output:\n"
+      "       <build>/book/index.html. Needs no server.\n"
+      "check  Checks every part of every chapter. Fails (exit 1) when a listing differs from\n"
+      "       the source region it is cut from, when a marker //> NAME ... //< NAME is missing,\n"
+      "       when a figure or link target does not exist, when a line of a code block\n"
+      "       (```text output excepted) is over 90 columns and would scroll in the HTML book,\n"
+      "       or when the parts of a chapter skip a number or a later part has a '# Title'.\n"
+      "       Prints chapter:line, listing and the first differing line.\n"
       "       It also runs each chapter program (figures to a scratch folder) and fails when a\n"
       "       ```text block of its chapter quotes a line the program does not print (the\n"
       "       block's lines must appear in the output in order; an excerpt is fine). The\n"
