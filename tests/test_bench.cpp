@@ -10,9 +10,11 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "bench_plot.hpp"
+#include "bench_progress.hpp"
 #include "bench_run.hpp"
 #include "bench_stats.hpp"
 #include "cli_testing.hpp"
@@ -85,6 +87,53 @@ std::size_t count(const std::string& text, const std::string& part) {
   std::size_t k = 0;
   for (auto p = text.find(part); p != std::string::npos; p = text.find(part, p + 1)) ++k;
   return k;
+}
+
+// The progress line is kept current during one long run: with a tick of 20 ms the line appears
+// once the benchmark has lasted a tick, is rewritten in place (each write begins with "\r" and
+// the erase-line sequence, none ends a line) during the run, and is erased at the end. Nothing
+// at all when it is not shown, or for a benchmark shorter than a tick.
+TEST(BenchProgress, ALongRunIsShownWhileItRuns) {
+  using namespace std::chrono_literals;
+  const std::string erase = "\r\033[K";
+  ::testing::internal::CaptureStderr();
+  {
+    t2bench::Progress p(2, 20ms, true);
+    std::this_thread::sleep_for(30ms);
+    p.start(1, "layers", 5000);
+    std::this_thread::sleep_for(300ms);  // one long run
+  }
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  const std::string text = erase + "t2 bench: run 1/2: layers on n = 5000 (";
+  EXPECT_EQ(err.rfind(text, 0), 0u) << err;                     // at the start of the run
+  EXPECT_GE(count(err, text), 3u) << err;                         // and again while it lasts
+  EXPECT_EQ(count(err, erase), count(err, text) + 1) << err;      // then erased
+  EXPECT_EQ(err.substr(err.size() - erase.size()), erase) << err;
+  EXPECT_EQ(err.find('\n'), std::string::npos) << err;           // in place: never a new line
+  for (bool shown : {false, true}) {
+    ::testing::internal::CaptureStderr();
+    {
+      t2bench::Progress p(3, shown ? 10s : 10ms, shown);
+      p.start(1, "hull", 10);
+      std::this_thread::sleep_for(30ms);
+    }
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << shown;
+  }
+  EXPECT_EQ(t2bench::Progress::line(3, 8, "delaunay", 100000, 61.4, 12.6),
+            "t2 bench: run 3/8: delaunay on n = 100000 (61 s so far, this run 13 s)");
+}
+
+// Shown on a terminal every second, on any stderr with T2_BENCH_PROGRESS=SECONDS; a bad value
+// is refused.
+TEST(BenchProgress, Setting) {
+  using t2bench::Progress;
+  EXPECT_TRUE(Progress::setting(true, nullptr).shown);
+  EXPECT_EQ(Progress::setting(true, nullptr).tick.count(), 1.0);
+  EXPECT_FALSE(Progress::setting(false, nullptr).shown);
+  EXPECT_TRUE(Progress::setting(false, "0.25").shown);
+  EXPECT_EQ(Progress::setting(false, "0.25").tick.count(), 0.25);
+  for (const char* bad : {"", "0", "-1", "x", "1s", "nan", "1e9"})
+    EXPECT_THROW(Progress::setting(false, bad), std::invalid_argument) << bad;
 }
 
 TEST(BenchPlot, SvgWithOneLinePerSeries) {
@@ -193,6 +242,31 @@ TEST_F(CliBench, ConvexLayersBothWays) {
   EXPECT_GT(rows.at("layers").at(400), 5u);
   EXPECT_EQ(rows.at("layers-graham").at(400), rows.at("layers").at(400));
   EXPECT_EQ(t2("bench layers --vs cgal").status, 2);
+}
+
+// The progress line goes to stderr only, and only when stderr is a terminal or it is asked for:
+// forced at a 1 ms tick on a run of several sizes, stderr holds the lines rewritten in place and
+// then erased, and stdout is the same table as without it (same rows, no control character).
+TEST_F(CliBench, ProgressLineOnStderrOnly) {
+  const std::string args = "bench graham --range 300..3000 --per-decade 1 --repeat 2";
+  const auto plain = t2(args);  // stderr is a pipe here: no line
+  ASSERT_EQ(plain.status, 0) << plain.err << plain.out;
+  EXPECT_EQ(plain.err, "");
+  ::setenv("T2_BENCH_PROGRESS", "0.001", 1);
+  const auto shown = t2(args);
+  ::setenv("T2_BENCH_PROGRESS", "soon", 1);
+  const auto bad = t2(args);
+  ::unsetenv("T2_BENCH_PROGRESS");
+  ASSERT_EQ(shown.status, 0) << shown.err << shown.out;
+  EXPECT_TRUE(has(shown.err, "\r\033[Kt2 bench: run 8/8: jarvis on n = 3000 (")) << shown.err;
+  EXPECT_EQ(shown.err.substr(shown.err.size() - 4), "\r\033[K") << shown.err;
+  EXPECT_EQ(shown.err.find('\n'), std::string::npos) << shown.err;
+  EXPECT_EQ(table(shown.out), table(plain.out)) << shown.out;
+  EXPECT_EQ(count(shown.out, "\n"), count(plain.out, "\n")) << shown.out;
+  for (char c : {'\r', '\033'}) EXPECT_EQ(shown.out.find(c), std::string::npos) << shown.out;
+  EXPECT_FALSE(has(shown.out, "t2 bench: run")) << shown.out;
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_TRUE(has(bad.err, "T2_BENCH_PROGRESS=soon")) << bad.err;
 }
 
 // A worker that answers 8 for t2 and 7 for CGAL: the command must fail and say so.

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_plot.hpp"
+#include "bench_progress.hpp"
 #include "bench_run.hpp"
 #include "bench_stats.hpp"
 #include "command.hpp"
@@ -84,38 +85,18 @@ double load_average() {
   return ::getloadavg(l, 1) == 1 ? l[0] : 0;
 }
 
-// One progress line on stderr, once the whole run has lasted more than a second.
-class Progress {
- public:
-  explicit Progress(std::size_t total) : total_(total), tty_(::isatty(2) != 0) {}
-  void step(std::size_t k, const Impl& i, std::size_t n) {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (s < 1) return;
-    fmt::print(stderr, "{}t2 bench: run {}/{}: {} on n = {} ({:.0f} s so far){}", tty_ ? "\r\033[K" : "", k, total_,
-               i.name, n, s, tty_ ? "" : "\n");
-    shown_ = true;
-  }
-  ~Progress() {
-    if (shown_ && tty_) fmt::print(stderr, "\r\033[K");
-  }
-
- private:
-  std::size_t total_;
-  bool tty_, shown_ = false;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
+// The runs, with the progress line on stderr (erased before this returns, so before the table).
 std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, const std::vector<std::size_t>& ns,
-                         const std::filesystem::path& worker) {
+                         const std::filesystem::path& worker, Progress::Setting shown) {
   const std::string problem = run[0]->problem;
-  Progress progress(ns.size() * run.size() * std::size_t(o.repeat));
+  Progress progress(ns.size() * run.size() * std::size_t(o.repeat), shown.tick, shown.shown);
   std::size_t k = 0;
   std::vector<Row> rows;
   for (std::size_t n : ns) {
     std::map<const Impl*, std::vector<Measurement>> got;
     for (int r = 0; r < o.repeat; ++r)  // repeats interleaved: a burst of load hits every peer
       for (const Impl* i : run) {
-        progress.step(++k, *i, n);
+        progress.start(++k, i->name, n);
         got[i].push_back(measure(worker, problem, *i, o.input, n, o.seed));
       }
     for (const Impl* i : run) {
@@ -149,6 +130,12 @@ int bench(const Options& o) {
     throw UsageError(fmt::format("--input {}: one of {}", o.input, fmt::join(inputs, ", ")));
   const std::vector<std::size_t> ns = sizes(o);
   if (ns.front() < 1) throw UsageError("--n must be at least 1");
+  Progress::Setting shown{};
+  try {
+    shown = Progress::setting(::isatty(2) != 0, std::getenv("T2_BENCH_PROGRESS"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   const auto worker = find_worker();
   if (!worker) {
     fmt::print(stderr,
@@ -160,7 +147,7 @@ int bench(const Options& o) {
   }
   std::vector<Row> rows;
   try {
-    rows = run_all(o, run, ns, *worker);
+    rows = run_all(o, run, ns, *worker, shown);
   } catch (const std::runtime_error& e) {
     fmt::print(stderr, "t2 bench: {}\n", e.what());
     return kFailed;
@@ -247,6 +234,9 @@ Action setup(CLI::App& app) {
   app.add_option("--plot", o->plot, "write the log-log plot of CPU time (SVG, atomically)")->type_name("OUT.svg");
   app.add_option("--csv", o->csv, "write the medians as CSV (atomically)")->type_name("OUT.csv");
   app.footer(catalogue() +
+             "\nA progress line on stderr, rewritten in place every second and erased before the table, when\n"
+             "stderr is a terminal and the benchmark lasts over a second; T2_BENCH_PROGRESS=SECONDS shows\n"
+             "it on any stderr, every SECONDS.\n"
              "\nExit status: 0 done; 1 a run failed, the worker is not built, or an exact peer's answer differs;\n"
              "2 bad usage.");
   return [o] { return bench(*o); };
