@@ -166,7 +166,13 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
   const std::regex command("t2 animate ([a-z-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
   int commands = 0;
   for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
-    const std::string md = t2::read_file(fs::path(T2_SOURCE_DIR) / "chapters" / ch / "chapter.md");
+    std::string md;  // the chapter's text: chapter.md, then its later parts chapter-2.md ...
+    for (int k = 1;; ++k) {
+      const fs::path part = fs::path(T2_SOURCE_DIR) / "chapters" / ch /
+                            (k == 1 ? std::string("chapter.md") : "chapter-" + std::to_string(k) + ".md");
+      if (!fs::exists(part)) break;
+      md += t2::read_file(part);
+    }
     int in_chapter = 0;
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
