@@ -7,7 +7,8 @@
 --  * a paragraph "Continued in [...](chapter-2.md)." (a link to another part of the same
 --    chapter) is for readers of the source files: the book, which makes one page of all the
 --    parts, drops it;
---  * figures/... stay figures/... (the builder copies the figures next to the pages);
+--  * figures/... stay figures/... (the builder copies the figures next to the pages), and so do
+--    animations/... (the builder writes the chapters' t2 animate pages there);
 --  * any other relative link points to the file in the repository;
 --  * inline code naming a library entity (`t2::orient`, `t2::orient(p, q, r)`) links to the API.
 
@@ -61,7 +62,7 @@ local function rewrite(target)
   if ch then return ch .. ".html" .. frag end
   local ex = p:match("^exercises/(%d%d%l?%-[^/]+)/README%.md$")
   if ex then return "exercises-" .. ex .. ".html" .. frag end
-  if p:match("^figures/") then return p .. frag end
+  if p:match("^figures/") or p:match("^animations/") then return p .. frag end
   return reporel .. "/" .. p .. frag
 end
 

@@ -174,12 +174,22 @@ std::vector<Problem> check_outputs(const std::string& rel, const std::vector<Out
   return ps;
 }
 
-std::vector<Problem> check_links(const fs::path& root, const std::string& rel, const Document& doc) {
+std::vector<Problem> check_links(const fs::path& root, const std::string& rel, const Document& doc,
+                                 const std::set<std::string>& animations) {
   std::vector<Problem> ps;
   const fs::path dir = (root / rel).parent_path();
   for (const auto& link : doc.links) {
     std::error_code ec;
-    if (!link.local || link.target.empty() || fs::exists(dir / link.target, ec)) continue;
+    if (!link.local || link.target.empty()) continue;
+    // animations/NAME.html of the book: written by a chapter's t2 animate command (book_animations.hpp).
+    const fs::path in_root = (fs::path(rel).parent_path() / link.target).lexically_normal();
+    if (in_root.parent_path() == "animations" && !link.image) {
+      if (!animations.count(in_root.filename().string()))
+        ps.push_back({rel + ":" + std::to_string(link.line),
+                      "link target " + link.target + ": no chapter's t2 animate command writes " + in_root.string()});
+      continue;
+    }
+    if (fs::exists(dir / link.target, ec)) continue;
     ps.push_back({rel + ":" + std::to_string(link.line),
                   std::string(link.image ? "figure " : "link target ") + link.target + " does not exist"});
   }

@@ -5,6 +5,7 @@
 // attributes ({.text}, ~~~) count; inline code, comments and code blocks hold no links.
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,10 @@ std::vector<OutputBlock> output_blocks(const Document& doc);
 std::vector<Problem> check_outputs(const std::string& rel, const std::vector<OutputBlock>& blocks,
                                    const std::string& output, const std::string& program);
 
-/// Problems of the links and images of chapter.md `rel` (under `root`): every local target must exist.
-std::vector<Problem> check_links(const fs::path& root, const std::string& rel, const Document& doc);
+/// Problems of the links and images of chapter.md `rel` (under `root`): every local target must
+/// exist, and a link to animations/NAME.html (the book's animations, book_animations.hpp) must
+/// name one of `animations`, the pages the chapters' t2 animate commands write.
+std::vector<Problem> check_links(const fs::path& root, const std::string& rel, const Document& doc,
+                                 const std::set<std::string>& animations);
 
 }  // namespace t2cli::book

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "book_animations.hpp"
 #include "book_ast.hpp"
 #include "book_core.hpp"
 #include "process.hpp"
@@ -120,6 +121,7 @@ std::vector<Problem> check_book(const fs::path& root, int* listings, const fs::p
   if (listings) *listings = 0;
   if (outputs) *outputs = 0;
   auto add = [&ps](const std::vector<Problem>& more) { ps.insert(ps.end(), more.begin(), more.end()); };
+  const auto animations = animation_pages(find_animations(root, ps));
   for (const auto& c : find_chapters(root)) {
     if (!c.has_text) continue;
     std::vector<Part> parts;
@@ -131,7 +133,7 @@ std::vector<Problem> check_book(const fs::path& root, int* listings, const fs::p
       if (listings) *listings += r.listings;
       add(r.problems);
       parts.push_back({rel, parse_markdown(texts.back(), rel)});
-      add(check_links(root, rel, parts.back().doc));
+      add(check_links(root, rel, parts.back().doc, animations));
       add(check_listing_widths(rel, parts.back().doc));
     }
     add(check_parts(c, parts, texts));

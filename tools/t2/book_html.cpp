@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "book_animations.hpp"
 #include "book_ast.hpp"
 #include "book_core.hpp"
 #include "t2/io.hpp"
@@ -167,6 +168,10 @@ int build_book(const BuildOptions& o) {
   t2::update_file_atomically(work / "api.tsv", tsv);
 
   copy_tree(o.root / "figures", o.out / "figures");
+  std::vector<Problem> bad;  // the chapters' animations, beside the figures
+  const auto animations = find_animations(o.root, bad);
+  if (!bad.empty()) throw std::runtime_error(bad.front().where + ": " + bad.front().message);
+  build_animations(o.root, animations, o.out, o.quiet);
   fs::copy_file(bookdir / "style.css", o.out / "style.css", fs::copy_options::overwrite_existing);
 
   const std::string reporel = rel(o.root, o.out);

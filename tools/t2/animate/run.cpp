@@ -1,0 +1,131 @@
+// What `t2 animate` does (run.hpp): each algorithm run with its recorder, the steps written as
+// the page of page.hpp.
+#include "animate/run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "animate/page.hpp"
+#include "t2/error.hpp"
+#include "t2/hull.hpp"
+#include "t2/io.hpp"
+#include "t2/trace/delaunay_recorder.hpp"
+#include "t2/trace/hull_recorder.hpp"
+#include "t2/trace/recording.hpp"
+#include "t2/triangulation/delaunay.hpp"
+
+namespace t2cli::animate {
+namespace {
+
+namespace tr = t2::trace;
+
+// Every step is drawn twice (both models) into the page: beyond this many points the page
+// grows past what a browser steps through comfortably, and the picture is unreadable anyway.
+constexpr std::size_t kMaxPoints = 200;
+
+std::string list(const std::vector<std::size_t>& v) {
+  std::string s;
+  for (std::size_t i : v) s += (s.empty() ? "p" : ", p") + std::to_string(i);
+  return s;
+}
+
+tr::Step step(const char* kind, std::string text, const char* structure) {
+  tr::Step s;
+  s.kind = kind;
+  s.text = std::move(text);
+  s.structure = structure;
+  return s;
+}
+
+// Runs a hull algorithm with a recorder; the last step is the algorithm's answer.
+void hull(const std::string& algo, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  std::vector<std::size_t> h;
+  try {
+    if (algo == "merge-hull") {
+      tr::HullRecorder r(tr::HullAlgo::merge, P, t2::lex_chart(), rec);
+      h = t2::merge_hull(std::span<const t2::Point>(P), r);
+    } else {
+      const t2::Chart chart = t2::chart_for(std::span<const t2::Point>(P), h);  // throws when no hull
+      if (h.size() != 1) {
+        std::vector<std::size_t> idx(P.size());
+        std::iota(idx.begin(), idx.end(), std::size_t{0});
+        tr::HullRecorder r(algo == "jarvis" ? tr::HullAlgo::jarvis : tr::HullAlgo::graham, P, chart, rec);
+        h = algo == "jarvis" ? t2::jarvis(std::span<const t2::Point>(P), idx, chart, r)
+                             : t2::graham(std::span<const t2::Point>(P), idx, chart, r);
+      }
+    }
+  } catch (const t2::NoHull& e) {
+    throw t2::Undefined(fmt::format("{}: no convex hull: {}", name, e.what()));
+  }
+  tr::Step s = step("answer",
+                    h.empty() ? "No point: the hull is empty."
+                              : fmt::format("The hull: {} ({} vertices, counter-clockwise).", list(h), h.size()),
+                    "hull");
+  s.chain = h;
+  s.closed = true;
+  rec.add(std::move(s));
+}
+
+// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder.
+void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  tr::DelaunayRecorder k(P, rec, plain);
+  if (!k.recording())
+    throw t2::BadInput(fmt::format("{}: t2 animate {} takes front points only (w > 0): the triangulation of T2 input "
+                                   "(delaunay_t2.hpp: each side apart, then merged along Omega) is not animated",
+                                   name, plain ? "triangulate" : "delaunay"));
+  t2::Triangulation t;
+  try {
+    t = t2::delaunay_with(std::span<const t2::Point>(P), k);
+  } catch (const t2::Undefined& e) {
+    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
+  }
+  tr::Step s = step("answer", "", "triangles");
+  for (const auto& f : t.finite_triangles()) s.triangles.push_back({f[0], f[1], f[2]});  // input indices
+  std::sort(s.triangles.begin(), s.triangles.end());
+  const std::string what = plain ? "incremental triangulation" : "Delaunay triangulation";
+  s.text = t.dimension() < 2 ? "Fewer than three points off one line: no triangle."
+                             : fmt::format("The {}: {} triangles, {} hull edges, {} duplicate points merged.", what,
+                                           s.triangles.size(), t.hull_edges().size(), t.duplicates().size());
+  rec.add(std::move(s));
+}
+
+}  // namespace
+
+const std::vector<Algorithm>& algorithms() {
+  static const std::vector<Algorithm> all = {{"jarvis", "Jarvis's march"},
+                                             {"graham", "Graham's scan"},
+                                             {"merge-hull", "the hemisphere-merge hull"},
+                                             {"triangulate", "incremental triangulation"},
+                                             {"delaunay", "randomized incremental Delaunay"}};
+  return all;
+}
+
+std::string write_animation(const std::string& algo, const t2::Scene& scene, const std::filesystem::path& out) {
+  std::vector<t2::Point> P;
+  for (const auto& p : scene.points) P.push_back(p.point);
+  if (P.size() > kMaxPoints)
+    throw t2::BadInput(fmt::format("{}: {} points: t2 animate draws every step, so at most {} points", scene.name,
+                                   P.size(), kMaxPoints));
+  std::string title;
+  for (const auto& a : algorithms())
+    if (algo == a.name) title = fmt::format("{} of {} ({} points)", a.title, scene.name, P.size());
+  if (title.empty()) throw std::invalid_argument(fmt::format("'{}': not an algorithm of t2 animate", algo));
+  tr::Recording rec;
+  const std::string range = P.empty() ? "no point" : fmt::format("{} points, p0 to p{}", P.size(), P.size() - 1);
+  rec.add(step("input", fmt::format("The input: {}. Next: {}.", range, title.substr(0, title.find(" of "))), ""));
+  if (algo == "triangulate" || algo == "delaunay")
+    triangulate(algo == "triangulate", P, scene.name, rec);
+  else
+    hull(algo, P, scene.name, rec);
+  t2::write_file_atomically(out, page(title, P, rec.steps()));
+  return fmt::format("{}: {} steps ({} at the lecture level)", out.string(), rec.size(),
+                     rec.at(tr::Depth::lecture).size());
+}
+
+}  // namespace t2cli::animate
