@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Builds and runs the README's "library in ten lines" example exactly as printed there, twice:
 # with add_subdirectory(t2) and with find_package(t2) after `cmake --install`.
-# Usage: readme_example.sh REPO_DIR
+# Usage: readme_example.sh REPO_DIR BUILD_DIR
+# The library is compiled once, by the add_subdirectory build (with no build type, as a user who
+# follows the README would); find_package uses `cmake --install` of BUILD_DIR, the build tree
+# whose tests run this script (so its install rules and exported targets are what is checked).
 set -euo pipefail
 repo=$(cd "$1" && pwd)
+build=$(cd "$2" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -18,7 +22,7 @@ grep -q 'add_subdirectory(t2)' "$tmp/CMakeLists.txt" || { echo "README example l
 
 run_app() {
   local dir=$1
-  cmake -S "$dir" -B "$dir/build" -DCMAKE_BUILD_TYPE=Release "${@:2}" > "$dir/configure.log"
+  cmake -S "$dir" -B "$dir/build" "${@:2}" > "$dir/configure.log"
   cmake --build "$dir/build" -j2 > "$dir/build.log" || { cat "$dir/build.log"; exit 1; }
   local got
   got=$("$dir/build/app")
@@ -34,10 +38,10 @@ ln -s "$repo" "$tmp/sub/t2"
 run_app "$tmp/sub"
 echo "add_subdirectory: ok"
 
-# 2. find_package after cmake --install
-cmake -S "$repo" -B "$tmp/lib" -DCMAKE_BUILD_TYPE=Release -DT2_BUILD_ALL=OFF > "$tmp/lib.log"
-cmake --build "$tmp/lib" -j2 >> "$tmp/lib.log"
-cmake --install "$tmp/lib" --prefix "$tmp/prefix" >> "$tmp/lib.log"
+# 2. find_package after cmake --install. The library alone (T2_BUILD_ALL=OFF) still configures as
+# a top-level project; the install is the one of the build tree under test.
+cmake -S "$repo" -B "$tmp/lib" -DT2_BUILD_ALL=OFF > "$tmp/lib.log" || { cat "$tmp/lib.log"; exit 1; }
+cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
 mkdir "$tmp/pkg" && cp "$tmp/app.cpp" "$tmp/pkg/"
 sed 's|^add_subdirectory(t2).*|find_package(t2 REQUIRED)|' "$tmp/CMakeLists.txt" > "$tmp/pkg/CMakeLists.txt"
 run_app "$tmp/pkg" -DCMAKE_PREFIX_PATH="$tmp/prefix"
