@@ -14,6 +14,7 @@
 
 #include "delaunay_inputs.hpp"
 #include "delaunay_t2_testing.hpp"
+#include "testing.hpp"
 #include "t2/triangulation/delaunay.hpp"
 
 namespace t2 {
@@ -63,11 +64,13 @@ TEST(DelaunayT2, HullAcrossOmegaAgainstBruteForce) {
   EXPECT_GT(mixed, 50);
 }
 
+// The certificates cost O(n²) exact tests: 500 points here, 2000 under the `long` label.
 TEST(DelaunayT2, LargeBothSides) {
+  const std::size_t n = 500 * static_cast<std::size_t>(testing::scale());
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    expect_t2_delaunay(delaunay(random_sides(2000, 0.3 * double(seed), seed)), 100);
+    expect_t2_delaunay(delaunay(random_sides(n, 0.3 * double(seed), seed)), 100);
     gen::Options o;
-    o.n = 2000;
+    o.n = n;
     o.seed = seed;
     expect_t2_delaunay(delaunay(gen::points(gen::Kind::both_sides, o)), 100);
   }
