@@ -77,9 +77,13 @@ void expect_self_contained(const std::string& html, const std::string& what) {
   EXPECT_TRUE(has(html, "\\u003csvg")) << what;  // the frames (escaped inside the JSON)
 }
 
+// Every step of a page is drawn in both models, so the pages cost some CPU per point: 8 points
+// here, 12 under the `long` label (tests/long.cmake).
+std::size_t animated_points() { return testing::scale() == 1 ? 8 : 12; }
+
 TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
-  generate("u.t2", gen::Kind::uniform, 12, 5);
-  generate("both.t2", gen::Kind::both_sides, 12, 3);
+  generate("u.t2", gen::Kind::uniform, animated_points(), 5);
+  generate("both.t2", gen::Kind::both_sides, animated_points(), 3);
   for (const char* file : {"u.t2", "both.t2"})
     for (const std::string algo : {"jarvis", "graham", "merge-hull"}) {
       const std::string what = algo + " " + file;
@@ -97,7 +101,7 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
 }
 
 TEST_F(AnimateCli, TriangulationsEndWithTheTriangulation) {
-  const auto P = generate("d.t2", gen::Kind::disk, 12, 2);
+  const auto P = generate("d.t2", gen::Kind::disk, animated_points(), 2);
   std::vector<std::size_t> expected;
   auto triangles = delaunay(P).finite_triangles();
   std::sort(triangles.begin(), triangles.end());
