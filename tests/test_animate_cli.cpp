@@ -153,7 +153,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   write("line.t2", "0 0\n1 1\n2 2\n");
   write("none.t2", "# nothing\n");
   for (const char* file : {"one.t2", "line.t2", "none.t2"})
-    for (const char* algo : {"jarvis", "graham", "merge-hull", "triangulate", "delaunay"}) {
+    for (const char* algo : {"jarvis", "graham", "merge-hull", "triangulate", "sweep", "delaunay"}) {
       const Result r = t2(std::string("animate ") + algo + " " + file + " -o x.html");
       EXPECT_EQ(r.status, 0) << algo << " " << file << r.err;
       EXPECT_TRUE(has(slurp(dir_ / "x.html"), "\"kind\":\"answer\"")) << algo << " " << file;
@@ -181,7 +181,7 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
       EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge-hull" || algo == "triangulate" ||
-                  algo == "delaunay")
+                  algo == "sweep" || algo == "delaunay")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

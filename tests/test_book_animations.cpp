@@ -116,7 +116,8 @@ TEST(BookAnimationsOfThisRepository, EveryAlgorithmIsAnimatedAndLinked) {
       algos.insert((*m)[1]), pages.insert((*m)[3]);
     for (std::sregex_iterator m(md.begin(), md.end(), link), end; m != end; ++m) linked.insert((*m)[1]);
   }
-  EXPECT_EQ(algos, (std::set<std::string>{"delaunay", "graham", "jarvis", "merge-hull", "triangulate"}));
+  EXPECT_EQ(algos,
+            (std::set<std::string>{"delaunay", "graham", "jarvis", "merge-hull", "sweep", "triangulate"}));
   EXPECT_EQ(linked, pages);
 }
 

@@ -11,6 +11,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/triangulate.hpp"
 
 namespace t2::testing {
 namespace {
@@ -133,6 +134,26 @@ TEST_F(PlayerInChromium, DelaunayEndsWithTheLibrarysTriangulation) {
   const Shown flip = load("step=5&level=debugging&click=prev");
   EXPECT_EQ(flip.pos, 4);
   EXPECT_FALSE(flip.explanation.empty());
+}
+
+// The sweep (chapter 09): the last step is t2::triangulate's answer; the debugging level adds
+// the joins and the flips of step 35, and steps back through them.
+TEST_F(PlayerInChromium, SweepEndsWithTheSweepsTriangulation) {
+  if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
+  T2_NEEDS_CHROMIUM();
+  const auto P = make("sweep", gen::Kind::disk, 9);
+  auto tris = triangulate(P).finite_triangles();
+  std::sort(tris.begin(), tris.end());
+  std::vector<std::size_t> expected;
+  for (const auto& t : tris) expected.insert(expected.end(), t.begin(), t.end());
+  const Shown last = load("step=last");
+  EXPECT_EQ(numbers(last.triangles), expected) << last.explanation;
+  EXPECT_EQ(numbers(last.counter).at(1), 9u) << last.counter;  // input, first triangle, 6 fans, answer
+  const Shown debug = load("step=last&level=debugging");
+  EXPECT_GT(numbers(debug.counter).at(1), 9u) << debug.counter;
+  const Shown join = load("step=2&level=debugging&click=next,prev");
+  EXPECT_EQ(join.pos, 2);
+  EXPECT_TRUE(has(join.explanation, "the next point in (x, y) order")) << join.explanation;
 }
 
 }  // namespace

@@ -36,10 +36,13 @@ Action setup(CLI::App& app) {
       "debugging: every test as well). The page starts paused at the first step; its URL\n"
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO: jarvis, graham, merge-hull (hulls of points of T2), triangulate (incremental\n"
-      "insertion, flips only where the new point sees hull edges; not the sweep of\n"
-      "t2 triangulate), delaunay (the same with Lawson flips: the library's randomized\n"
-      "incremental Delaunay). The triangulations are animated for front points only.");
-  app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate or delaunay")
+      "insertion in spatial order, flips only where the new point sees hull edges), sweep\n"
+      "(the sweep of t2 triangulate, chapter 09: the points in (x, y) order, each joined to\n"
+      "the hull edges it sees; lecture: one step per point, its new fan; debugging: each\n"
+      "flip of step 35 too), delaunay (the insertion with Lawson flips: the library's\n"
+      "randomized incremental Delaunay). The triangulations are animated for front points\n"
+      "only.");
+  app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate, sweep or delaunay")
       ->required()
       ->check([](const std::string& a) {
         for (const auto& x : animate::algorithms())

@@ -18,7 +18,9 @@
 #include "t2/trace/delaunay_recorder.hpp"
 #include "t2/trace/hull_recorder.hpp"
 #include "t2/trace/recording.hpp"
+#include "t2/trace/sweep_recorder.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/triangulate.hpp"
 
 namespace t2cli::animate {
 namespace {
@@ -72,27 +74,45 @@ void hull(const std::string& algo, const std::vector<t2::Point>& P, const std::s
   rec.add(std::move(s));
 }
 
-// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder.
-void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
-  tr::DelaunayRecorder k(P, rec, plain);
-  if (!k.recording())
+// The triangulations are animated for front points only.
+void front_only(const std::vector<t2::Point>& P, const std::string& name, const std::string& algo) {
+  if (!std::all_of(P.begin(), P.end(), [](const t2::Point& p) { return p.w() > 0; }))
     throw t2::BadInput(fmt::format("{}: t2 animate {} takes front points only (w > 0): the triangulation of T2 input "
                                    "(delaunay_t2.hpp: each side apart, then merged along Omega) is not animated",
-                                   name, plain ? "triangulate" : "delaunay"));
+                                   name, algo));
+}
+
+// The last step of a triangulation: the algorithm's answer `t` (`what` it is).
+void answer(const t2::Triangulation& t, const std::string& what, tr::Recording& rec) {
+  tr::Step s = step("answer", "", "triangles");
+  for (const auto& f : t.finite_triangles()) s.triangles.push_back({f[0], f[1], f[2]});  // input indices
+  std::sort(s.triangles.begin(), s.triangles.end());
+  s.text = t.dimension() < 2 ? "Fewer than three points off one line: no triangle."
+                             : fmt::format("The {}: {} triangles, {} hull edges, {} duplicate points merged.", what,
+                                           s.triangles.size(), t.hull_edges().size(), t.duplicates().size());
+  rec.add(std::move(s));
+}
+
+// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder.
+void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  front_only(P, name, plain ? "triangulate" : "delaunay");
+  tr::DelaunayRecorder k(P, rec, plain);
   t2::Triangulation t;
   try {
     t = t2::delaunay_with(std::span<const t2::Point>(P), k);
   } catch (const t2::Undefined& e) {
     throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
   }
-  tr::Step s = step("answer", "", "triangles");
-  for (const auto& f : t.finite_triangles()) s.triangles.push_back({f[0], f[1], f[2]});  // input indices
-  std::sort(s.triangles.begin(), s.triangles.end());
-  const std::string what = plain ? "incremental triangulation" : "Delaunay triangulation";
-  s.text = t.dimension() < 2 ? "Fewer than three points off one line: no triangle."
-                             : fmt::format("The {}: {} triangles, {} hull edges, {} duplicate points merged.", what,
-                                           s.triangles.size(), t.hull_edges().size(), t.duplicates().size());
-  rec.add(std::move(s));
+  answer(t, plain ? "incremental triangulation" : "Delaunay triangulation", rec);
+}
+
+// Runs the sweep of t2 triangulate (chapter 09) with a recorder.
+void sweep(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  front_only(P, name, "sweep");
+  tr::SweepRecorder r(P, rec);
+  const t2::Triangulation t = t2::triangulate(std::span<const t2::Point>(P), r);
+  r.finish();
+  answer(t, "sweep triangulation (t2 triangulate)", rec);
 }
 
 }  // namespace
@@ -102,6 +122,7 @@ const std::vector<Algorithm>& algorithms() {
                                              {"graham", "Graham's scan"},
                                              {"merge-hull", "the hemisphere-merge hull"},
                                              {"triangulate", "incremental triangulation"},
+                                             {"sweep", "the sweep triangulation"},
                                              {"delaunay", "randomized incremental Delaunay"}};
   return all;
 }
@@ -119,7 +140,9 @@ std::string write_animation(const std::string& algo, const t2::Scene& scene, con
   tr::Recording rec;
   const std::string range = P.empty() ? "no point" : fmt::format("{} points, p0 to p{}", P.size(), P.size() - 1);
   rec.add(step("input", fmt::format("The input: {}. Next: {}.", range, title.substr(0, title.find(" of "))), ""));
-  if (algo == "triangulate" || algo == "delaunay")
+  if (algo == "sweep")
+    sweep(P, scene.name, rec);
+  else if (algo == "triangulate" || algo == "delaunay")
     triangulate(algo == "triangulate", P, scene.name, rec);
   else
     hull(algo, P, scene.name, rec);

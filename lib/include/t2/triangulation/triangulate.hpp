@@ -22,6 +22,12 @@
 /// not depend on the order of the input (the sort decides), only on the point set.
 ///
 /// Front points only (w > 0): a point on the back side or on Ω throws `Undefined`.
+///
+/// **Trace.** `triangulate(input, trace)` calls `trace.inserted(tr, v)` when vertex v (an input
+/// index) joins: the third vertex of the first triangle, a point on its first edge, or a swept
+/// point before its flips; and `trace.flipped(tr, t, u)` after each flip of step 35 (t and u the
+/// new triangles, as `Triangulation::flip` leaves them). The default `NoSweepTrace` does nothing
+/// and is inlined away; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`.
 
 #include <algorithm>
 #include <cstdint>
@@ -39,6 +45,14 @@
 
 namespace t2 {
 
+/// The trace that records nothing: the default of `triangulate`, free (file comment).
+struct NoSweepTrace {
+  /// Hook: vertex v has just joined the triangulation (before its flips).
+  void inserted(const Triangulation&, Triangulation::Index) {}
+  /// Hook: the edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
+  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
+};
+
 namespace detail {
 
 /// True when the front point p lies strictly outside the hull edge of the infinite triangle f:
@@ -53,7 +67,9 @@ inline bool sees_hull_edge(const Triangulation& tr, Triangulation::Index f, cons
 /// is an infinite triangle with p at slot 0; while p sees strictly the hull edge of the
 /// infinite triangle u across the edge opposite p, flip that edge (u's hull edge becomes
 /// a finite triangle with p). Returns the infinite triangle at p where the chain stops.
-inline Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t) {
+template <class Trace = NoSweepTrace>
+Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t,
+                                     Trace&& trace = {}) {
   // t = (p, a, v∞), else (p, v∞, b)
   const bool backward = tr.vertex(t, 2) == Triangulation::infinite;
   for (;;) {
@@ -61,6 +77,7 @@ inline Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::In
     if (!sees_hull_edge(tr, u, tr.point(tr.vertex(t, 0)))) return t;
     // (p, a, v∞) + (a, x, v∞) -> (p, a, x) + (p, x, v∞), and the mirror image
     tr.flip(t, 0);
+    trace.flipped(tr, t, u);
     if (backward) t = u;
   }
 }
@@ -105,8 +122,10 @@ inline std::vector<Triangulation::Index> sorted_distinct(std::span<const Point> 
 
 /// A triangulation of front points (w > 0) by the sweep of the file comment: every point is a
 /// vertex or a reported duplicate; the triangles are counter-clockwise. Throws `Undefined` for a
-/// point not on the front side, `BadInput` for more than 715 827 882 points.
-inline Triangulation triangulate(std::span<const Point> input) {
+/// point not on the front side, `BadInput` for more than 715 827 882 points. `trace` sees the
+/// steps (file comment).
+template <class Trace = NoSweepTrace>
+Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
   using Index = Triangulation::Index;
   for (std::size_t k = 0; k < input.size(); ++k)
     if (input[k].w() <= 0)
@@ -129,10 +148,12 @@ inline Triangulation triangulate(std::span<const Point> input) {
   const Index a = u[0], b = u[c - 1], q = u[c];
   const bool ccw = orient(input[a], input[b], input[q]) > 0;
   if (ccw) tr.make_triangle(a, b, q, u.size()); else tr.make_triangle(b, a, q, u.size());
+  trace.inserted(tr, q);
   // the edge is opposite slot 2 of t0, then of the newest triangle
   for (std::size_t k = 1; k + 1 < c; ++k) {
     const Index t = k == 1 ? 0 : static_cast<Index>(tr.size() - 1);
     tr.insert_on_edge(t, 2, u[ccw ? k : c - k - 1]);
+    trace.inserted(tr, u[ccw ? k : c - k - 1]);
   }
   // The sweep: each point sees a hull edge at the previous one, m, whose infinite
   // triangles are (m, x, v∞) and (m, v∞, y) (t1 and t2 of make_triangle for m = q).
@@ -143,10 +164,13 @@ inline Triangulation triangulate(std::span<const Point> input) {
     if (!detail::sees_hull_edge(tr, hit, input[p]))
       throw std::logic_error("triangulate: no hull edge seen");
     tr.insert_in_face(hit, p);  // p is vertex 0 of hit and of the last two triangles
+    trace.inserted(tr, p);
     const Index n = static_cast<Index>(tr.size());
     for (Index f : {hit, n - 2, n - 1}) {
-      if (tr.vertex(f, 2) == Triangulation::infinite) back = detail::flip_hull_chain(tr, f);
-      if (tr.vertex(f, 1) == Triangulation::infinite) fwd = detail::flip_hull_chain(tr, f);
+      if (tr.vertex(f, 2) == Triangulation::infinite)
+        back = detail::flip_hull_chain(tr, f, trace);
+      if (tr.vertex(f, 1) == Triangulation::infinite)
+        fwd = detail::flip_hull_chain(tr, f, trace);
     }
   }
   //< triangulate

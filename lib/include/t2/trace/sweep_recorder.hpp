@@ -1,0 +1,163 @@
+#pragma once
+/// @file sweep_recorder.hpp
+/// @brief A trace for `triangulate` (triangulation/triangulate.hpp) that records the sweep of
+/// chapter 09 as `Step`s: `t2 animate sweep`.
+///
+/// `triangulate` builds on the input's own indices (no reordering), so the hooks' vertex
+/// indices are input indices. The points are swept in (x, y) order; equal points are one vertex
+/// (the smallest index) and call no hook.
+///
+/// Depths (seed 003's levels, as the chapter teaches the sweep): at the lecture level one step
+/// per point — the first triangle, then each point with its new fan, the triangles it has made
+/// once its flips are done; at the debugging level also the point joined to the one hull edge
+/// it is put against, and each flip of Algorithm 9's step 35, a hull edge it also sees turned
+/// into a triangle. Every step holds every finite triangle so far and the hull so far (closed,
+/// counter-clockwise), so a player can jump to it.
+///
+/// Call `finish()` after `triangulate` returns: the last point's fan is recorded then.
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "t2/lexicographic.hpp"
+#include "t2/trace/recording.hpp"
+#include "t2/triangulation/triangulation.hpp"
+
+namespace t2::trace {
+
+/// A `triangulate` trace that records the steps of the sweep (see the file comment).
+class SweepRecorder {
+ public:
+  using Index = Triangulation::Index;  ///< the triangulation's indices
+
+  /// @param input the points that will be given to `triangulate` (a view is kept)
+  /// @param out where the steps go
+  SweepRecorder(std::span<const Point> input, Recording& out) : input_(input), out_(&out) {}
+  /// Not copied: `triangulate` takes its trace by reference, and a copy would split the steps.
+  SweepRecorder(const SweepRecorder&) = delete;
+  /// Not copied (see the copy constructor).
+  SweepRecorder& operator=(const SweepRecorder&) = delete;
+
+  /// Hook: vertex v has just joined (before its flips).
+  void inserted(const Triangulation& tr, Index v) {
+    finish();  // the fan of the point before
+    if (first_) {
+      first_ = false;
+      third_ = v;
+      Step st = state(tr, "start", Depth::lecture, "hull so far");
+      const Tri f = st.triangles.at(0);
+      st.touched = {f};
+      st.points = {v, f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]};
+      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + p(f[0]) + ", " + p(f[1]) + ", " +
+                p(f[2]) + " (" + p(v) + " is the first point off the line of the smallest two).";
+      out_->add(std::move(st));
+      return;
+    }
+    Step st = state(tr, "insert", Depth::debugging, "hull so far");
+    st.points = {v};
+    st.touched = fan(tr, v);
+    if (t2::compare_xy(input_[v], input_[third_]) < 0) {
+      st.depth = Depth::lecture;  // a point on the first edge: joined to both triangles, no flip
+      st.text = p(v) + " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
+                "on it, in two.";
+      out_->add(std::move(st));
+      return;
+    }
+    const Tri& t = st.touched.at(0);
+    st.edges = {{t[0] == v ? t[1] : t[0], t[2] == v ? t[1] : t[2]}};
+    st.text = p(v) + ", the next point in (x, y) order, lies outside the hull of the points before it and sees the hull "
+              "edge " + p(st.edges[0][0]) + " " + p(st.edges[0][1]) + " at the last point: joined to it, one triangle. "
+              "Next, step 35: the hull edges next to it that it also sees.";
+    out_->add(std::move(st));
+    flips_ = 0;
+    pending_ = fan_step(tr, v);
+  }
+
+  /// Hook: the edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
+  void flipped(const Triangulation& tr, Index t, Index u) {
+    const Index v = tr.vertex(t, 0);
+    Step st = state(tr, "flip", Depth::debugging, "hull so far");
+    for (Index x : {t, u})
+      if (!tr.is_infinite(x)) st.touched.push_back(tri(tr, x));
+    st.points = {v};
+    if (st.touched.size() == 1) {
+      const Tri& f = st.touched[0];
+      st.edges = {{f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]}};
+      st.text = p(v) + " also sees the hull edge " + p(st.edges[0][0]) + " " + p(st.edges[0][1]) +
+                " from outside too: step 35 flips it into the triangle " + p(f[0]) + " " + p(f[1]) + " " +
+                p(f[2]) + ", and the reflex angle at " + p(v) + " is gone.";
+    }
+    out_->add(std::move(st));
+    ++flips_;
+    pending_ = fan_step(tr, v);
+  }
+
+  /// Records the fan of the last swept point, if it is not recorded yet (called by the next
+  /// `inserted`, and once by the caller after `triangulate` returns).
+  void finish() {
+    if (pending_.kind.empty()) return;
+    const std::size_t n = pending_.touched.size();
+    pending_.text = p(pending_.points.at(0)) + " is a hull vertex now; its fan: " + std::to_string(n) +
+                    " new triangle" + (n == 1 ? "" : "s") + " (" + std::to_string(flips_) + " hull edge" +
+                    (flips_ == 1 ? "" : "s") + " flipped away by step 35).";
+    out_->add(std::move(pending_));
+    pending_ = Step();
+  }
+
+ private:
+  static std::string p(std::size_t i) { return "p" + std::to_string(i); }
+
+  static Tri tri(const Triangulation& tr, Index t) {
+    Tri x{tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)};
+    std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+    return x;
+  }
+
+  // The finite triangles at v, sorted.
+  static std::vector<Tri> fan(const Triangulation& tr, Index v) {
+    std::vector<Tri> out;
+    for (Index t = 0; t < tr.size(); ++t)
+      if (!tr.is_infinite(t) && tr.slot(t, v) >= 0) out.push_back(tri(tr, t));
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The lecture step of swept point v, its fan, as tr holds it now (the text comes at the end).
+  static Step fan_step(const Triangulation& tr, Index v) {
+    Step st = state(tr, "fan", Depth::lecture, "hull so far");
+    st.points = {v};
+    st.touched = fan(tr, v);
+    return st;
+  }
+
+  // The state after a step: every finite triangle (sorted, smallest index first, as
+  // `Triangulation::finite_triangles` gives them) and the hull so far, counter-clockwise.
+  static Step state(const Triangulation& tr, const char* kind, Depth d, const char* structure) {
+    Step st;
+    st.kind = kind;
+    st.depth = d;
+    st.structure = structure;
+    for (const auto& f : tr.finite_triangles()) st.triangles.push_back({f[0], f[1], f[2]});
+    std::sort(st.triangles.begin(), st.triangles.end());
+    std::map<Index, Index> next;
+    for (const auto& [a, b] : tr.hull_edges()) next[a] = b;
+    for (Index a = next.empty() ? 0 : next.begin()->first; !next.empty() && st.chain.size() < next.size();
+         a = next[a])
+      st.chain.push_back(a);
+    st.closed = true;
+    return st;
+  }
+
+  std::span<const Point> input_;
+  Recording* out_;
+  bool first_ = true;
+  Index third_ = 0;         // the first triangle's last vertex: the first edge's points are before it
+  Step pending_;            // the fan of the last swept point, not recorded yet (kind "" when none)
+  std::size_t flips_ = 0;   // the flips of that point
+};
+
+}  // namespace t2::trace
