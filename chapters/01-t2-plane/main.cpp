@@ -22,6 +22,7 @@ using t2::ExactPoint;
 using t2::Integer;
 using t2::Point;
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 
 const char* sym(t2::Sign s) { return t2::to_symbol(s); }
 
@@ -76,12 +77,12 @@ void line_t1(const std::filesystem::path& dir) {
   require(t2::orient(b, five) == t2::POSITIVE && t2::orient(c, five) == t2::NEGATIVE, "T1 orientation");
 
   dr::Figure fig;
-  fig.add(b, dr::Style().label("[1,3] = [2,6]").color("#1f77b4"));
-  fig.add(c, dr::Style().label("[-1,-3]").color("#d62728"));
+  fig.add(b, dr::Style().label("[1,3] = [2,6]").color(pal::blue));
+  fig.add(c, dr::Style().label("[-1,-3]").color(pal::red));
   fig.add(up, dr::Style());    // the view labels +inf and -inf itself
   fig.add(down, dr::Style());
-  fig.add(t2::T1(1, 0), dr::Style().label("0 = [1,0]").color("#2ca02c"));
-  fig.add(t2::T1(-1, 0), dr::Style().label("[-1,0]").color("#2ca02c"));
+  fig.add(t2::T1(1, 0), dr::Style().label("0 = [1,0]").color(pal::green));
+  fig.add(t2::T1(-1, 0), dr::Style().label("[-1,0]").color(pal::green));
   dr::T1View circle;
   circle.model = dr::T1Model::circle;
   dr::save(fig, circle, dir / "t1-circle.svg");
@@ -133,11 +134,11 @@ void points_t2(const std::filesystem::path& dir) {
   require(t2::side_of(s) == t2::Side::back && t2::side_of(d) == t2::Side::infinity, "sides");
 
   dr::Figure fig;
-  fig.add(p, dr::Style().label("p = [1,2,1]").color("#1f77b4"));
-  fig.add(np, dr::Style().label("¬p").label_angle(-45).color("#d62728"));
-  fig.add(s, dr::Style().label("s = [-2,1,3]").label_angle(-60).color("#d62728"));
-  fig.add(d, dr::Style().label("d = [0,1,1]").color("#2ca02c"));
-  fig.add(nd, dr::Style().label("¬d").label_angle(-135).color("#2ca02c"));
+  fig.add(p, dr::Style().label("p = [1,2,1]").color(pal::blue));
+  fig.add(np, dr::Style().label("¬p").label_angle(-45).color(pal::red));
+  fig.add(s, dr::Style().label("s = [-2,1,3]").label_angle(-60).color(pal::red));
+  fig.add(d, dr::Style().label("d = [0,1,1]").color(pal::green));
+  fig.add(nd, dr::Style().label("¬d").label_angle(-135).color(pal::green));
   dr::PlaneView plane;
   plane.half_width = 3;
   plane.axes = true;
@@ -177,11 +178,11 @@ void orientation(const std::filesystem::path& dir) {
   dr::Figure fig;
   const std::vector<ExactPoint> tri = {a, b, c};
   const std::vector<ExactPoint> back = {t2::antipode(a), t2::antipode(b), t2::antipode(c)};
-  fig.add(tri, dr::Style().color("#1f77b4").fill("#1f77b4"));
-  fig.add(back, dr::Style().color("#d62728").fill("#d62728").fill_opacity(0.12));
-  fig.arrow(a, b, dr::Style().color("#1f77b4").width(2.2));
-  fig.arrow(b, c, dr::Style().color("#1f77b4").width(2.2));
-  fig.arrow(c, a, dr::Style().color("#1f77b4").width(2.2));
+  fig.add(tri, dr::Style().color(pal::blue).fill(pal::blue));
+  fig.add(back, dr::Style().color(pal::red).fill(pal::red).fill_opacity(0.12));
+  fig.arrow(a, b, dr::Style().color(pal::blue).width(2.2));
+  fig.arrow(b, c, dr::Style().color(pal::blue).width(2.2));
+  fig.arrow(c, a, dr::Style().color(pal::blue).width(2.2));
   fig.add(a, dr::Style().label("a").label_angle(-135));
   fig.add(b, dr::Style().label("b").label_angle(-45));
   fig.add(c, dr::Style().label("c").label_angle(135));
@@ -226,10 +227,10 @@ void parallels(const std::filesystem::path& dir) {
   require(t2::side_of(x) == t2::Side::infinity, "parallels meet on Omega");
 
   dr::Figure fig;
-  fig.add(l, dr::Style().color("#1f77b4").arrow().label("l"));
-  fig.add(m, dr::Style().color("#ff7f0e").arrow().label("m"));
-  fig.add(x, dr::Style().label("meet(l, m)").color("#2ca02c"));
-  fig.add(t2::antipode(x), dr::Style().label("meet(m, l)").label_angle(135).color("#2ca02c"));
+  fig.add(l, dr::Style().color(pal::blue).arrow().label("l"));
+  fig.add(m, dr::Style().color(pal::orange).arrow().label("m"));
+  fig.add(x, dr::Style().label("meet(l, m)").color(pal::green));
+  fig.add(t2::antipode(x), dr::Style().label("meet(m, l)").label_angle(135).color(pal::green));
   dr::PlaneView plane;
   plane.half_width = 3;
   plane.axes = true;
@@ -259,7 +260,7 @@ void sides(const std::filesystem::path& dir) {
   require(-1 + 0 + 0 < 0 && t2::side(l, Point(1, 0, 0)) == t2::NEGATIVE, "[1,0,0] is on the negative side");
 
   dr::Figure fig;
-  fig.add(l, dr::Style().color("#1f77b4").shade().fill("#1f77b4").arrow().label("l"));
+  fig.add(l, dr::Style().color(pal::blue).shade().fill(pal::blue).arrow().label("l"));
   fig.add(Point(1, 1, 1), dr::Style().label("[1,1,1] +"));
   fig.add(Point(-1, 1, 2), dr::Style().label("[-1,1,2] +").label_angle(-45));  // back, drawn at (-1, -2)
   fig.add(Point(1, 0, 0), dr::Style().label("[1,0,0] -").label_angle(-135));
@@ -298,13 +299,13 @@ void duality(const std::filesystem::path& dir) {
   require(t2::side(P, s) == t2::side(t2::dual(s), t2::dual(P)), "duality keeps sides");
 
   dr::Figure fig;
-  fig.add(t2::join(p, r), dr::Style().color("#999999").label("join(p, r)"));
-  for (const auto& [pt, name, colour] : {std::tuple{p, "p", "#1f77b4"}, std::tuple{q, "q", "#2ca02c"},
-                                        std::tuple{r, "r", "#d62728"}}) {
+  fig.add(t2::join(p, r), dr::Style().color(pal::light_grey).label("join(p, r)"));
+  for (const auto& [pt, name, colour] : {std::tuple{p, "p", pal::blue}, std::tuple{q, "q", pal::green},
+                                        std::tuple{r, "r", pal::red}}) {
     fig.add(pt, dr::Style().color(colour).label(name));
     fig.add(t2::dual(pt), dr::Style().color(colour).dash({5, 3}));
   }
-  fig.add(z, dr::Style().color("#000000").marker(dr::Marker::square).label("meet(P, Q)"));
+  fig.add(z, dr::Style().color(pal::black).marker(dr::Marker::square).label("meet(P, Q)"));
   dr::PlaneView plane;
   plane.half_width = 3;
   plane.axes = true;
@@ -353,20 +354,20 @@ void perspective(const std::filesystem::path& dir) {
             << " = -2, in front of the eye\n";
 
   dr::Figure scene;
-  scene.add(t2::ExactLine(0, 0, 1), dr::Style().color("#999999").dash({5, 3}).label("eye's line"));
-  scene.add(t2::ExactLine(-1, 0, 1), dr::Style().color("#bbbbbb").label("image line"));
-  scene.segment(a, ExactPoint::cartesian(1, 0), dr::Style().color("#2ca02c").width(2));
-  scene.segment(ExactPoint::cartesian(1, 0), b, dr::Style().color("#d62728").width(2).dash({4, 3}));
+  scene.add(t2::ExactLine(0, 0, 1), dr::Style().color(pal::light_grey).dash({5, 3}).label("eye's line"));
+  scene.add(t2::ExactLine(-1, 0, 1), dr::Style().color(pal::pale_grey).label("image line"));
+  scene.segment(a, ExactPoint::cartesian(1, 0), dr::Style().color(pal::green).width(2));
+  scene.segment(ExactPoint::cartesian(1, 0), b, dr::Style().color(pal::red).width(2).dash({4, 3}));
   scene.add(ExactPoint::cartesian(0, 0), dr::Style().marker(dr::Marker::square).label("eye"));
   scene.add(a, dr::Style().label("a"));
   scene.add(b, dr::Style().label("b (behind)"));
   dr::Figure img;
-  img.add(t2::transform(M, t2::ExactLine(-1, 0, 1)), dr::Style().color("#bbbbbb").label("M(image line)"));
-  img.segment(Ma, t2::point_at_infinity(image), dr::Style().color("#2ca02c").width(2));
-  img.segment(t2::point_at_infinity(image), Mb, dr::Style().color("#d62728").width(2).dash({4, 3}));
+  img.add(t2::transform(M, t2::ExactLine(-1, 0, 1)), dr::Style().color(pal::pale_grey).label("M(image line)"));
+  img.segment(Ma, t2::point_at_infinity(image), dr::Style().color(pal::green).width(2));
+  img.segment(t2::point_at_infinity(image), Mb, dr::Style().color(pal::red).width(2).dash({4, 3}));
   img.add(Ma, dr::Style().label("M a"));
   img.add(Mb, dr::Style().label("M b"));
-  img.add(t2::point_at_infinity(image), dr::Style().color("#d62728").label("M (1, 0)"));
+  img.add(t2::point_at_infinity(image), dr::Style().color(pal::red).label("M (1, 0)"));
   dr::PlaneView plane;
   plane.half_width = 3;
   plane.axes = true;

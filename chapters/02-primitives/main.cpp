@@ -20,6 +20,7 @@ using t2::ExactPoint;
 using t2::Integer;
 using t2::Sign;
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using P = ExactPoint;
 using T1 = t2::ExactT1;
 
@@ -345,25 +346,25 @@ void figures(const std::filesystem::path& dir) {
   {  // The three segment cases of the planar model.
     const P a = P::cartesian(-2, -1), b = P::cartesian(1, 2), c(-1, 1, -1), d(-2, -4, -2);
     dr::Figure f;
-    f.segment(a, b, dr::Style().color("#1f77b4").width(2));
-    f.segment(c, d, dr::Style().color("#2ca02c").width(2));
-    f.segment(a, d, dr::Style().color("#d62728").width(2));
+    f.segment(a, b, dr::Style().color(pal::blue).width(2));
+    f.segment(c, d, dr::Style().color(pal::green).width(2));
+    f.segment(a, d, dr::Style().color(pal::red).width(2));
     f.add(a, dr::Style().label("a").label_angle(135));
     f.add(b, dr::Style().label("b"));
     f.add(c, dr::Style().label("c").label_angle(-135));
     f.add(d, dr::Style().label("d").label_angle(-45));
-    f.add(t2::point_at_infinity(t2::ExactSegment(a, d)), dr::Style().color("#d62728").label("ad \u2229 \u03a9"));
+    f.add(t2::point_at_infinity(t2::ExactSegment(a, d)), dr::Style().color(pal::red).label("ad \u2229 \u03a9"));
     written += dr::save(f, plane, dir / "segments-plane.svg");
     written += dr::save(f, sphere, dir / "segments-sphere.svg");
   }
   {  // A triangle with a back vertex: it crosses Omega.
     const P a = P::cartesian(0, 0), b = P::cartesian(3, 0), c(-1, -1, -2);
     dr::Figure f;
-    f.add(std::vector<P>{a, b, c}, dr::Style().color("#1f77b4").fill("#9ecae1"));
+    f.add(std::vector<P>{a, b, c}, dr::Style().color(pal::blue).fill(pal::shade));
     f.add(a, dr::Style().label("a").label_angle(-135));
     f.add(b, dr::Style().label("b").label_angle(-45));
     f.add(c, dr::Style().label("c"));
-    f.add(P::cartesian(1, -1), dr::Style().color("#2ca02c").label("s").label_angle(-90));
+    f.add(P::cartesian(1, -1), dr::Style().color(pal::green).label("s").label_angle(-90));
     written += dr::save(f, plane, dir / "triangle-plane.svg");
     written += dr::save(f, sphere, dir / "triangle-sphere.svg");
   }
@@ -373,10 +374,10 @@ void figures(const std::filesystem::path& dir) {
     std::vector<P> v;
     for (int i = 0; i < 4; ++i) v.push_back(r.corner(i));
     dr::Figure f;
-    f.add(v, dr::Style().color("#1f77b4").fill("#9ecae1"));
+    f.add(v, dr::Style().color(pal::blue).fill(pal::shade));
     const char* names[4] = {"a", "b", "c", "d"};
     for (int i = 0; i < 4; ++i) f.add(v[i], dr::Style().label(names[i]).label_angle(i == 0 ? -135 : 45));
-    f.add(P(0, a.x(), a.y()), dr::Style().color("#d62728").marker(dr::Marker::cross).size(6).label("seed's c"));
+    f.add(P(0, a.x(), a.y()), dr::Style().color(pal::red).marker(dr::Marker::cross).size(6).label("seed's c"));
     written += dr::save(f, plane, dir / "quadrant-plane.svg");
     dr::SphereView facing = sphere;  // look from the quadrant's side of the sphere
     facing.lon = 60;
@@ -390,23 +391,23 @@ void figures(const std::filesystem::path& dir) {
     // Label directions, one set per model, chosen so that no two labels overlap.
     auto circles = [&](bool planar) {
       dr::Figure f;
-      f.add(finite, dr::Style().color("#1f77b4").width(2).fill("#9ecae1").arrow().label(
+      f.add(finite, dr::Style().color(pal::blue).width(2).fill(pal::shade).arrow().label(
                         "finite"));
       f.add(beyond, dr::Style()
-                        .color("#d62728")
+                        .color(pal::red)
                         .width(2)
                         .arrow()
                         .label("beyond infinity")
                         .label_angle(planar ? -20 : -100));
       f.add(line, dr::Style()
-                      .color("#2ca02c")
+                      .color(pal::green)
                       .width(2)
                       .arrow()
                       .label("infinite")
                       .label_angle(planar ? -45 : 170));
       f.add(c, dr::Style().label("c").label_angle(-90));
       f.add(line.center(), dr::Style()
-                               .color("#2ca02c")
+                               .color(pal::green)
                                .label("centre of the line")
                                .label_angle(planar ? 200 : -120));
       return f;

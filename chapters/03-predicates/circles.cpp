@@ -22,6 +22,7 @@ using t2::ExactPoint;
 using t2::Integer;
 using t2::Sign;
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 
 const char* sym(Sign s) { return t2::to_symbol(s); }
 std::string str(const ExactPoint& p) { return t2::to_string(p); }
@@ -143,9 +144,9 @@ void circle_figures(const std::filesystem::path& dir, int& written) {
   {  // The order of distances from c beyond infinity: ranks 1..6, the antipode last.
     const ExactPoint c(1, 0, 0);
     dr::Figure f;
-    f.add(t2::ExactCircle(c, ExactPoint(-1, 0, 1)), dr::Style().color("#d62728").dash({4, 3}));
-    f.add(t2::ExactCircle(c, ExactPoint(-1, 0, -5)), dr::Style().color("#ff7f0e").dash({4, 3}));
-    f.add(c, dr::Style().color("#1f77b4").label("c").label_angle(135));
+    f.add(t2::ExactCircle(c, ExactPoint(-1, 0, 1)), dr::Style().color(pal::red).dash({4, 3}));
+    f.add(t2::ExactCircle(c, ExactPoint(-1, 0, -5)), dr::Style().color(pal::orange).dash({4, 3}));
+    f.add(c, dr::Style().color(pal::blue).label("c").label_angle(135));
     int rank = 1;
     for (const auto& p : order_points()) f.add(p, dr::Style().label(std::to_string(rank++)).label_angle(45));
     written += dr::save(f, plane, dir / "distance-order-plane.svg");
@@ -155,7 +156,7 @@ void circle_figures(const std::filesystem::path& dir, int& written) {
     const ExactPoint a = ExactPoint::cartesian(1, 0), b = ExactPoint::cartesian(0, 1),
                      d = ExactPoint::cartesian(-1, 0);
     dr::Figure f;
-    f.add(t2::circle_through(a, b, d), dr::Style().fill("#2ca02c").fill_opacity(0.15).arrow());
+    f.add(t2::circle_through(a, b, d), dr::Style().fill(pal::green).fill_opacity(0.15).arrow());
     for (const auto& [p, name] : {std::pair{a, "a"}, std::pair{b, "b"}, std::pair{d, "d"}})
       f.add(p, dr::Style().label(name));
     for (int x = -2; x <= 2; ++x)
@@ -164,7 +165,7 @@ void circle_figures(const std::filesystem::path& dir, int& written) {
           const ExactPoint q(w, x, y);
           if (q == a || q == b || q == d) continue;
           const Sign s = t2::in_disk(a, b, d, q);
-          f.add(q, dr::Style().size(2.5).color(s > 0 ? "#2ca02c" : (s < 0 ? "#d62728" : "#000000")));
+          f.add(q, dr::Style().size(2.5).color(s > 0 ? pal::green : (s < 0 ? pal::red : pal::black)));
         }
     dr::PlaneView near = plane;
     near.half_width = 1.6;

@@ -32,6 +32,7 @@ using t2::Integer;
 using t2::Point;
 using t2::Sign;
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 
 std::string str(const Point& p) { return t2::to_string(p); }
 std::string str(const ExactPoint& p) { return t2::to_string(p); }
@@ -473,12 +474,12 @@ void figures(const std::filesystem::path& dir) {
   {  // Orientation: p, q, r and the back point s = ¬r, with the positive side of p ∨ q shaded.
     const Point p(1, 0, 0), q(1, 2, 0), r(1, 1, 1), s(-1, -1, -1);
     dr::Figure f;
-    f.add(t2::join(p, q), dr::Style().color("#777777").shade().arrow());
+    f.add(t2::join(p, q), dr::Style().color(pal::grey).shade().arrow());
     f.segment(p, q, dr::Style().width(2.2));
     f.add(p, dr::Style().label("p").label_angle(-135));
     f.add(q, dr::Style().label("q").label_angle(-45));
-    f.add(r, dr::Style().color("#1f77b4").label("r"));
-    f.add(s, dr::Style().color("#d62728").label("s = \u00acr").label_angle(135));
+    f.add(r, dr::Style().color(pal::blue).label("r"));
+    f.add(s, dr::Style().color(pal::red).label("s = \u00acr").label_angle(135));
     written += dr::save(f, plane, dir / "orient-plane.svg");
     written += dr::save(f, sphere, dir / "orient-sphere.svg");
   }
@@ -489,12 +490,12 @@ void figures(const std::filesystem::path& dir) {
     const char* names[3][2] = {{"p1", "q1"}, {"p2", "q2"}, {"", "q3"}};
     int k = 0;
     for (const auto& [p, q] : pairs) {
-      f.segment(p, q, dr::Style().color("#555555"));
+      f.segment(p, q, dr::Style().color(pal::dark_grey));
       f.add(p, dr::Style().label(names[k][0]).label_angle(-135));
       f.add(q, dr::Style().label(names[k][1]));
       ++k;
-      f.add(t2::midpoint(p, q), dr::Style().color("#2ca02c").marker(dr::Marker::square).size(5));
-      f.add(sketch::naive_midpoint(p, q), dr::Style().color("#d62728").marker(dr::Marker::cross).size(5));
+      f.add(t2::midpoint(p, q), dr::Style().color(pal::green).marker(dr::Marker::square).size(5));
+      f.add(sketch::naive_midpoint(p, q), dr::Style().color(pal::red).marker(dr::Marker::cross).size(5));
     }
     dr::PlaneView wide = plane;  // room for the back half-ray of the front-back segment
     wide.half_width = 5;
@@ -506,11 +507,11 @@ void figures(const std::filesystem::path& dir) {
     const t2::ExactLine r = t2::join(a, c);
     const t2::ExactLine rp = t2::join(a, ExactPoint(0, r.X(), r.Y()));
     dr::Figure f;
-    f.add(r, dr::Style().color("#999999").arrow());
-    f.add(rp, dr::Style().color("#1f77b4").shade());
+    f.add(r, dr::Style().color(pal::light_grey).arrow());
+    f.add(rp, dr::Style().color(pal::blue).shade());
     f.add(a, dr::Style().label("a"));
     f.add(b, dr::Style().label("b"));
-    f.add(c, dr::Style().color("#d62728").label("c"));
+    f.add(c, dr::Style().color(pal::red).label("c"));
     written += dr::save(f, plane, dir / "sweep-plane.svg");
     written += dr::save(f, sphere, dir / "sweep-sphere.svg");
   }

@@ -358,7 +358,8 @@ std::string raster_svg(const std::vector<int>& s, int n, const std::string& titl
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\"" << size + 18
     << "\" viewBox=\"0 0 " << size << ' ' << size + 18 << "\">\n<title>" << title << "</title>\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  auto colour = [](int v) { return v > 0 ? "#3b6fb6" : v < 0 ? "#d9534f" : "#f2c200"; };
+  namespace pal = t2::draw::palette;
+  auto colour = [](int v) { return v > 0 ? pal::positive : v < 0 ? pal::negative : pal::zero; };
   for (int j = 0; j < n; ++j) {
     int i = 0;
     while (i < n) {
@@ -377,20 +378,21 @@ std::string raster_svg(const std::vector<int>& s, int n, const std::string& titl
 // The clipping example in both models of T² (t2::draw): the same points, lines and segments.
 t2::draw::Figure clipping_figure() {
   namespace dr = t2::draw;
+  namespace pal = t2::draw::palette;
   using P = t2::Point;
   const P A = P::cartesian(2, 2), B = P::cartesian(9, 5), C = P::cartesian(8, 2), D = P::cartesian(6, 5),
           E = P::cartesian(4, 1), F = P::cartesian(5, 6);
   const P H = t2::meet(t2::join(A, B), t2::join(C, D)), G = t2::meet(t2::join(A, B), t2::join(E, F));
   dr::Figure f;
   f.segment(A, B, dr::Style().width(2));
-  f.segment(C, D, dr::Style().color("#3b6fb6").width(2));
-  f.segment(E, F, dr::Style().color("#d9534f").width(2));
+  f.segment(C, D, dr::Style().color(pal::blue).width(2));
+  f.segment(E, F, dr::Style().color(pal::red).width(2));
   f.add(A, dr::Style().label("A").label_angle(-135));
   f.add(B, dr::Style().label("B"));
-  f.add(C, dr::Style().color("#3b6fb6").label("C").label_angle(-45));
-  f.add(D, dr::Style().color("#3b6fb6").label("D"));
-  f.add(E, dr::Style().color("#d9534f").label("E").label_angle(-45));
-  f.add(F, dr::Style().color("#d9534f").label("F"));
+  f.add(C, dr::Style().color(pal::blue).label("C").label_angle(-45));
+  f.add(D, dr::Style().color(pal::blue).label("D"));
+  f.add(E, dr::Style().color(pal::red).label("E").label_angle(-45));
+  f.add(F, dr::Style().color(pal::red).label("F"));
   f.add(H, dr::Style().marker(dr::Marker::square).label("H").label_angle(-45));
   f.add(G, dr::Style().marker(dr::Marker::square).label("G").label_angle(135));
   return f;

@@ -20,6 +20,7 @@ using t2::ExactPolygon;
 using t2::Point;
 using t2::Sign;
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 
 const char* sym(Sign s) { return t2::to_symbol(s); }
 std::string str(const ExactPoint& p) { return t2::to_string(p); }
@@ -337,8 +338,8 @@ void figures(const std::filesystem::path& dir) {
     const ExactPolygon A = set_A();
     ExactPolygon hull;
     for (const std::size_t i : hull_order(A)) hull.push_back(A[i]);
-    f.add(t2::ExactLine(2, 0, 1), dr::Style().color("#888888").dash({5, 3}).label("l"));
-    f.add(hull, dr::Style().fill("#2ca02c").fill_opacity(0.2).color("#2ca02c").width(1.6));
+    f.add(t2::ExactLine(2, 0, 1), dr::Style().color(pal::grey).dash({5, 3}).label("l"));
+    f.add(hull, dr::Style().fill(pal::green).fill_opacity(0.2).color(pal::green).width(1.6));
     for (std::size_t i = 0; i < A.size(); ++i) f.add(A[i], dr::Style().label("a" + std::to_string(i)));
     dr::PlaneView pv;
     pv.cy = -1;
@@ -348,8 +349,8 @@ void figures(const std::filesystem::path& dir) {
     save(f, "hull-exists", pv, side_on);
     dr::Figure g;
     const ExactPolygon B = set_B();
-    g.add(ExactPolygon{B[0], B[1], B[2]}, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
-    for (std::size_t i = 0; i < 3; ++i) g.segment(B[i], B[3], dr::Style().color("#d62728").dash({4, 3}));
+    g.add(ExactPolygon{B[0], B[1], B[2]}, dr::Style().fill(pal::blue).fill_opacity(0.15).width(1.6));
+    for (std::size_t i = 0; i < 3; ++i) g.segment(B[i], B[3], dr::Style().color(pal::red).dash({4, 3}));
     for (std::size_t i = 0; i < B.size(); ++i) g.add(B[i], dr::Style().label("b" + std::to_string(i)));
     dr::SphereView from_minus_y;  // the front triangle on top, the back point b3 below
     from_minus_y.lat = 30;
@@ -358,12 +359,12 @@ void figures(const std::filesystem::path& dir) {
   }
   {  // Point location: inside green, outside red, boundary black.
     dr::Figure f;
-    f.add(poly, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
+    f.add(poly, dr::Style().fill(pal::blue).fill_opacity(0.15).width(1.6));
     for (long x = -2; x <= 16; x += 2)
       for (long y = -2; y <= 10; y += 2) {
         const ExactPoint q(2, x, y);
         const Sign s = t2::locate(poly, q);
-        f.add(q, dr::Style().size(2.5).color(s > 0 ? "#2ca02c" : (s < 0 ? "#d62728" : "#000000")));
+        f.add(q, dr::Style().size(2.5).color(s > 0 ? pal::green : (s < 0 ? pal::red : pal::black)));
       }
     save(f, "locate", plane);
   }
@@ -371,7 +372,7 @@ void figures(const std::filesystem::path& dir) {
     dr::Figure f;
     ExactPolygon image;
     for (const auto& p : poly) image.push_back(ExactPoint(t2::Integer(3 * p.w() - p.y()), p.x(), p.y()));
-    f.add(image, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
+    f.add(image, dr::Style().fill(pal::blue).fill_opacity(0.15).width(1.6));
     for (std::size_t i = 0; i < image.size(); ++i)
       f.add(image[i], dr::Style().label("p" + std::to_string(i)));
     dr::PlaneView wide;  // wide enough for the back vertices p3 = (-6, -4) and p5 = (0, -4)
@@ -386,7 +387,8 @@ void figures(const std::filesystem::path& dir) {
   {  // Ear clipping.
     dr::Figure f;
     for (const auto& t : t2::ear_clipping(poly))
-      f.add(ExactPolygon{poly[t[0]], poly[t[1]], poly[t[2]]}, dr::Style().fill("#ff7f0e").fill_opacity(0.2).color("#999999"));
+      f.add(ExactPolygon{poly[t[0]], poly[t[1]], poly[t[2]]},
+            dr::Style().fill(pal::orange).fill_opacity(0.2).color(pal::light_grey));
     f.add(poly, dr::Style().width(2));
     for (std::size_t i = 0; i < poly.size(); ++i) f.add(poly[i], dr::Style().label(std::to_string(i)));
     save(f, "ears", plane);
@@ -394,15 +396,15 @@ void figures(const std::filesystem::path& dir) {
   {  // The fifth orientation: ab crosses cd, but not ~c~d although the four signs agree.
     dr::Figure f;
     const ExactPoint a = P(-2, 0), b = P(2, 0), c = P(0, -2), d = P(0, 2);
-    f.segment(a, b, dr::Style().width(2).color("#1f77b4"));
-    f.segment(c, d, dr::Style().width(2).color("#2ca02c"));
-    f.segment(t2::antipode(c), t2::antipode(d), dr::Style().width(2).color("#d62728"));
+    f.segment(a, b, dr::Style().width(2).color(pal::blue));
+    f.segment(c, d, dr::Style().width(2).color(pal::green));
+    f.segment(t2::antipode(c), t2::antipode(d), dr::Style().width(2).color(pal::red));
     f.add(a, dr::Style().label("a"));
     f.add(b, dr::Style().label("b"));
     f.add(c, dr::Style().label("c"));
     f.add(d, dr::Style().label("d"));
-    f.add(t2::antipode(c), dr::Style().label("~c").color("#d62728"));
-    f.add(t2::antipode(d), dr::Style().label("~d").color("#d62728"));
+    f.add(t2::antipode(c), dr::Style().label("~c").color(pal::red));
+    f.add(t2::antipode(d), dr::Style().label("~d").color(pal::red));
     dr::PlaneView centred;
     centred.half_width = 3;
     save(f, "fifth", centred);
@@ -413,9 +415,9 @@ void figures(const std::filesystem::path& dir) {
     f.segment(a, b, dr::Style().width(2));
     for (const ExactPoint& q : {P(1, 3), P(-2, 1), ExactPoint(2, 10, 6)}) {
       const ExactPoint c = t2::closest_point_on_segment(a, b, q);
-      f.segment(q, c, dr::Style().color("#999999").dash({4, 3}));
-      f.add(q, dr::Style().color("#1f77b4"));
-      f.add(c, dr::Style().color("#d62728"));
+      f.segment(q, c, dr::Style().color(pal::light_grey).dash({4, 3}));
+      f.add(q, dr::Style().color(pal::blue));
+      f.add(c, dr::Style().color(pal::red));
     }
     save(f, "closest", plane);
   }

@@ -15,6 +15,7 @@
 namespace {
 
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using t2::HullAlgorithm;
 using t2::Point;
 
@@ -165,7 +166,7 @@ void figures(const std::filesystem::path& dir) {
     written += dr::save(f, sv, dir / (name + "-sphere.svg"));
     count += 2;
   };
-  const dr::Style hull_style = dr::Style().fill("#2ca02c").fill_opacity(0.2).color("#2ca02c").width(1.6);
+  const dr::Style hull_style = dr::Style().fill(pal::green).fill_opacity(0.2).color(pal::green).width(1.6);
   dr::PlaneView plane;
   plane.half_width = 5;
   dr::SphereView sphere;
@@ -186,10 +187,10 @@ void figures(const std::filesystem::path& dir) {
   {  // No hull: p0, p1, p2 front, p3 the back point whose antipode is inside their triangle.
     const std::vector<Point> B{Point::cartesian(-2, -1), Point::cartesian(2, -1), Point::cartesian(0, 2), Point(-1, 0, 0)};
     dr::Figure f;
-    f.add(std::vector<Point>{B[0], B[1], B[2]}, dr::Style().fill("#1f77b4").fill_opacity(0.15).width(1.6));
-    for (std::size_t i = 0; i < 3; ++i) f.segment(B[i], B[3], dr::Style().color("#d62728").dash({4, 3}));
+    f.add(std::vector<Point>{B[0], B[1], B[2]}, dr::Style().fill(pal::blue).fill_opacity(0.15).width(1.6));
+    for (std::size_t i = 0; i < 3; ++i) f.segment(B[i], B[3], dr::Style().color(pal::red).dash({4, 3}));
     for (std::size_t i = 0; i < B.size(); ++i) f.add(B[i], dr::Style().label("p" + std::to_string(i)));
-    f.add(t2::antipode(B[3]), dr::Style().label("~p3").color("#d62728"));
+    f.add(t2::antipode(B[3]), dr::Style().label("~p3").color(pal::red));
     dr::PlaneView small;
     small.half_width = 3;
     save(f, "no-hull", small, sphere);
@@ -198,8 +199,8 @@ void figures(const std::filesystem::path& dir) {
     g.add(p, dr::Style().label("p"));
     g.add(q, dr::Style().label("~p").label_angle(-60));
     const Point r = Point::cartesian(-1, 1);
-    g.segment(r, p, dr::Style().color("#d62728").dash({4, 3}));  // both segments exist; together
-    g.segment(r, q, dr::Style().color("#d62728").dash({4, 3}));  // they are half a great circle
+    g.segment(r, p, dr::Style().color(pal::red).dash({4, 3}));  // both segments exist; together
+    g.segment(r, q, dr::Style().color(pal::red).dash({4, 3}));  // they are half a great circle
     g.add(r, dr::Style().label("r"));
     save(g, "antipodal", small, sphere);
   }

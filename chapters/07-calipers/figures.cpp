@@ -10,6 +10,7 @@
 namespace chapter07 {
 
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using t2::Point;
 
 std::vector<Point> pocket_polygon() {
@@ -74,8 +75,8 @@ void figures(const std::filesystem::path& dir) {
     written += dr::save(f, sv, dir / (name + "-sphere.svg"));
     count += 2;
   };
-  const dr::Style green = dr::Style().fill("#2ca02c").fill_opacity(0.2).color("#2ca02c").width(1.6);
-  const dr::Style red = dr::Style().color("#d62728").width(2.2);
+  const dr::Style green = dr::Style().fill(pal::green).fill_opacity(0.2).color(pal::green).width(1.6);
+  const dr::Style red = dr::Style().color(pal::red).width(2.2);
   dr::PlaneView plane;
   plane.half_width = 4;
   dr::SphereView sphere;
@@ -95,13 +96,13 @@ void figures(const std::filesystem::path& dir) {
     dr::Figure f;
     f.add(H, green);
     for (const auto& [a, b] : t2::antipodal_pairs(H, all))
-      f.segment(H[a], H[b], dr::Style().color("#1f77b4").dash({4, 3}).width(1));
+      f.segment(H[a], H[b], dr::Style().color(pal::blue).dash({4, 3}).width(1));
     const auto d = t2::diameter(H);
     f.segment(H[d->first], H[d->second], red);
     const auto w = t2::width(H);
     const auto edge = t2::join(H[w->from], H[w->to]);
-    f.add(edge, dr::Style().color("#ff7f0e").width(1.2));
-    f.add(t2::join(H[w->vertex], t2::meet(edge, t2::omega<double>())), dr::Style().color("#ff7f0e").width(1.2));
+    f.add(edge, dr::Style().color(pal::orange).width(1.2));
+    f.add(t2::join(H[w->vertex], t2::meet(edge, t2::omega<double>())), dr::Style().color(pal::orange).width(1.2));
     for (std::size_t i = 0; i < H.size(); ++i) f.add(H[i], dr::Style().label("p" + std::to_string(i)));
     save(f, "calipers", plane, sphere);
   }
@@ -120,7 +121,7 @@ void figures(const std::filesystem::path& dir) {
     o.n = 200;
     o.seed = 7;
     const auto P = t2::gen::points(t2::gen::Kind::disk, o);
-    static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
+    static const char* colours[] = {pal::blue, pal::orange, pal::green, pal::red, pal::purple, pal::brown};
     dr::Figure f;
     const auto L = t2::convex_layers(P);
     for (std::size_t j = 0; j < L.size(); ++j) {
@@ -142,7 +143,7 @@ void figures(const std::filesystem::path& dir) {
     dr::Figure f;
     f.add(corners(t2::polygon_kernel(S)), green);
     f.add(S, dr::Style().width(1.4));
-    f.add(Point(1, 0, 0), dr::Style().label("origin").color("#d62728"));
+    f.add(Point(1, 0, 0), dr::Style().label("origin").color(pal::red));
     dr::PlaneView unit;
     unit.half_width = 1.2;
     save(f, "kernel-star", unit, sphere);

@@ -18,6 +18,7 @@
 namespace {
 
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using t2::Hull3dAlgorithm;
 using t2::Point3;
 
@@ -150,7 +151,8 @@ void lifting(const std::filesystem::path& dir) {
   v.elevation = -20;  // from below: the lower hull faces the viewer
   dr::save_polyhedron(t2::hull_polyhedron(L), v, dir / "lifted.svg", L);
   dr::Figure f;  // the triangulation in the plane
-  for (const auto& t : lower) f.add(std::vector<t2::Point>{A[t[0]], A[t[1]], A[t[2]]}, dr::Style().color("#1f77b4").fill("#dbe9f6"));
+  for (const auto& t : lower)
+    f.add(std::vector<t2::Point>{A[t[0]], A[t[1]], A[t[2]]}, dr::Style().color(pal::blue).fill(pal::pale_blue));
   for (std::size_t i = 0; i < A.size(); ++i) {
     dr::Style st = dr::Style().label("p" + std::to_string(i));
     if (i == 1) st.label_angle(-60);

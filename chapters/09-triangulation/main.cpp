@@ -19,6 +19,7 @@
 namespace {
 
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using t2::Point;
 using t2::Triangulation;
 using Index = Triangulation::Index;
@@ -151,9 +152,9 @@ void figures(const std::filesystem::path& dir) {
     for (const auto& t : tr.finite_triangles()) {
       const bool hot = t[0] == marked || t[1] == marked || t[2] == marked;
       f.add(std::vector<Point>{S[t[0]], S[t[1]], S[t[2]]},
-            dr::Style().color("#1f77b4").fill(hot ? "#ff7f0e" : "#1f77b4").fill_opacity(hot ? 0.35 : 0.1));
+            dr::Style().color(pal::blue).fill(hot ? pal::orange : pal::blue).fill_opacity(hot ? 0.35 : 0.1));
     }
-    for (auto [a, b] : extra) f.segment(S[a], S[b], dr::Style().color("#ff7f0e").width(1.6));
+    for (auto [a, b] : extra) f.segment(S[a], S[b], dr::Style().color(pal::orange).width(1.6));
     double cx = 0, cy = 0;  // labels point away from the centre of the set
     for (const Point& p : S) cx += p.x() / double(S.size()), cy += p.y() / double(S.size());
     for (std::size_t k = 0; k < S.size(); ++k)

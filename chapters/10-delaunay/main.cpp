@@ -24,6 +24,7 @@
 namespace {
 
 namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
 using t2::Point;
 using t2::Triangulation;
 
@@ -235,11 +236,11 @@ void figures(const std::filesystem::path& dir) {
     std::vector<Point> Q;
     for (const P2& p : q) Q.push_back(Point::cartesian(1.2 * (p.x - cx), 1.2 * (p.y - cy)));
     dr::Figure f;
-    f.add(Q, dr::Style().color("#1f77b4").width(1.6).fill("#1f77b4").fill_opacity(0.08));
+    f.add(Q, dr::Style().color(pal::blue).width(1.6).fill(pal::blue).fill_opacity(0.08));
     const int a = by_angle(q), h = by_height(q);
-    f.add(t2::circle_through(Q[a], Q[a + 1], Q[(a + 2) % 4]), dr::Style().color("#999999").dash({3, 3}));
-    f.segment(Q[a], Q[a + 2], dr::Style().color("#2ca02c").width(2));
-    f.segment(Q[h], Q[h + 2], dr::Style().color("#d62728").width(2).dash({5, 3}));
+    f.add(t2::circle_through(Q[a], Q[a + 1], Q[(a + 2) % 4]), dr::Style().color(pal::light_grey).dash({3, 3}));
+    f.segment(Q[a], Q[a + 2], dr::Style().color(pal::green).width(2));
+    f.segment(Q[h], Q[h + 2], dr::Style().color(pal::red).width(2).dash({5, 3}));
     for (int k = 0; k < 4; ++k) f.add(Q[k], dr::Style().label("q" + std::to_string(k)));
     dr::PlaneView pv;
     pv.half_width = 3.5;
@@ -259,7 +260,7 @@ void figures(const std::filesystem::path& dir) {
       dr::Figure f;
       for (const auto& t : tr.finite_triangles())
         f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
-              dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.08));
+              dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08));
       for (const Point& p : P) f.add(p, dr::Style().size(2.5));
       save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
     }
@@ -269,14 +270,14 @@ void figures(const std::filesystem::path& dir) {
   auto t2_figure = [&](const std::vector<Point>& P, const std::string& name, const dr::PlaneView& pv) {
     const Triangulation tr = t2::delaunay(P);
     dr::Figure f;
-    const dr::Style st = dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.08);
+    const dr::Style st = dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08);
     for (const auto& t : tr.finite_triangles()) {
       bool flat = false;
       for (int k = 0; k < 3; ++k) flat = flat || P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]);
       if (!flat) f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]}, st);
       for (int k = 0; k < 3 && flat; ++k)  // a flat face: only its edges between non-antipodes
         if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]])))
-          f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color("#d62728").width(1.6));
+          f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(pal::red).width(1.6));
     }
     for (std::size_t k = 0; k < P.size(); ++k) f.add(P[k], dr::Style().label("p" + std::to_string(k)));
     save(f, name, pv, sphere);

@@ -1,6 +1,7 @@
 #pragma once
 /// @file palette.hpp
-/// @brief The colours of the figures: one palette for items and one for the models' own marks.
+/// @brief The colours of the figures: one palette for items, one for the models' own marks and
+/// a few marks of particular figures.
 ///
 /// Scene files name the item colours by the names below (`color=dark_grey`, see `named`).
 ///
@@ -59,5 +60,11 @@ inline constexpr const char* sphere = "#f3f6f9";     ///< the face of the sphere
 inline constexpr const char* graticule = "#d9d9d9";  ///< meridians and parallels
 inline constexpr const char* outline = dark_grey;    ///< the outline of the sphere
 inline constexpr const char* t1_ink = "#333333";     ///< the models of T¹ and their notes
+
+// ---------------------------------------------------------------- marks of particular figures
+inline constexpr const char* positive = "#3b6fb6";   ///< a positive sign in a sign map (chapter 04)
+inline constexpr const char* negative = "#d9534f";   ///< a negative sign in a sign map
+inline constexpr const char* zero = "#f2c200";       ///< a zero sign in a sign map
+inline constexpr const char* pale_blue = "#dbe9f6";  ///< a fill under blue edges (chapter 08's triangles)
 
 }  // namespace t2::draw::palette
