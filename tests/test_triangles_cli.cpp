@@ -102,8 +102,9 @@ TEST_F(TrianglesCli, BadAndUndefinedInput) {
   EXPECT_EQ(r.status, 2);
   r = t2("delaunay - --algorithm sweep", "0 0\n");
   EXPECT_EQ(r.status, 2);
-  // A back point: the sweep, Lawson and divide and conquer take front points only.
-  for (const char* c : {"triangulate", "delaunay --algorithm flip", "delaunay --algorithm divide"}) {
+  // A back point: Lawson and divide and conquer take front points only (t2 triangulate takes
+  // T² input: test_triangulate_t2_cli.cpp).
+  for (const char* c : {"delaunay --algorithm flip", "delaunay --algorithm divide"}) {
     r = t2(std::string(c) + " - --svg out.svg", "0 0\n1 0\n-1 -2 -3\n");
     EXPECT_EQ(r.status, 3) << c;
     EXPECT_TRUE(has(r.err, "undefined in T2: <stdin>: ")) << r.err;

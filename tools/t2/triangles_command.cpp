@@ -102,9 +102,10 @@ Action triangles_setup(CLI::App& app, std::shared_ptr<TrianglesOptions> o, const
       "first, the lines sorted. Equal points are merged (stderr names them) and the smallest\n"
       "index is the vertex; collinear points give no triangle.\n"
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 undefined\n"
-      "in T2 or not implemented: t2 triangulate and --algorithm flip take front points only,\n"
-      "t2 delaunay takes points on both sides, or all on Omega, but not points on Omega\n"
-      "together with others.");
+      "in T2 or not implemented: --algorithm flip and divide take front points only; t2\n"
+      "triangulate refuses points all on one great circle and around it, and a point whose\n"
+      "antipode lies inside a hull edge of all the others (the face beyond would be a\n"
+      "hemisphere); t2 delaunay refuses an empty side with points on Omega all around it.");
   return [o, command, build] { return run(*o, command, build); };
 }
 

@@ -32,8 +32,10 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "t2/error.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/triangulate.hpp"
 #include "t2/triangulation/triangulation.hpp"
@@ -82,7 +84,12 @@ inline std::size_t flip_to_delaunay(Triangulation& tr) {
 
 /// The Delaunay triangulation of front points by Lawson's algorithm: `triangulate`, then
 /// `flip_to_delaunay`. The same triangles as `delaunay(points)`, in O(n²) worst-case time.
+/// Throws `Undefined` for a point not on the front side (the flips assume a planar hull).
 inline Triangulation delaunay_by_flips(std::span<const Point> points) {
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (points[k].w() <= 0)
+      throw Undefined("delaunay_by_flips: point " + std::to_string(k) + " = " + to_string(points[k]) +
+                      " is not on the front side (w > 0); Lawson's flips take front points only");
   Triangulation tr = triangulate(points);
   flip_to_delaunay(tr);
   return tr;

@@ -21,13 +21,15 @@
 /// triangle (dimension 1, 0 or −1), and every point on a hull edge is a vertex. The result does
 /// not depend on the order of the input (the sort decides), only on the point set.
 ///
-/// Front points only (w > 0): a point on the back side or on Ω throws `Undefined`.
+/// Front points only (w > 0) take the sweep; input with a point on the back side or on Ω goes
+/// to the incremental construction of triangulate_t2.hpp (seed 000, Algorithm 9 on T²).
 ///
 /// **Trace.** `triangulate(input, trace)` calls `trace.inserted(tr, v)` when vertex v (an input
 /// index) joins: the third vertex of the first triangle, a point on its first edge, or a swept
 /// point before its flips; and `trace.flipped(tr, t, u)` after each flip of step 35 (t and u the
 /// new triangles, as `Triangulation::flip` leaves them). The default `NoSweepTrace` does nothing
 /// and is inlined away; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`.
+/// T² input is not traced (it takes no sweep).
 
 #include <algorithm>
 #include <cstdint>
@@ -41,6 +43,7 @@
 #include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
+#include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
@@ -120,17 +123,16 @@ inline std::vector<Triangulation::Index> sorted_distinct(std::span<const Point> 
 
 }  // namespace detail
 
-/// A triangulation of front points (w > 0) by the sweep of the file comment: every point is a
-/// vertex or a reported duplicate; the triangles are counter-clockwise. Throws `Undefined` for a
-/// point not on the front side, `BadInput` for more than 715 827 882 points. `trace` sees the
-/// steps (file comment).
+/// A triangulation of the points: front points (w > 0) by the sweep of the file comment, any
+/// other input by `triangulate_t2` (its faces may include lunes and flat faces, and its
+/// `Undefined` cases apply). Every point is a vertex or a reported duplicate; the proper
+/// triangles are counter-clockwise. Throws `BadInput` for more than 715 827 882 points.
+/// `trace` sees the steps of the sweep (file comment).
 template <class Trace = NoSweepTrace>
 Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
   using Index = Triangulation::Index;
-  for (std::size_t k = 0; k < input.size(); ++k)
-    if (input[k].w() <= 0)
-      throw Undefined("triangulate: point " + std::to_string(k) + " = " + to_string(input[k]) +
-                      " is not on the front side (w > 0); the triangulation of T2 input is not implemented");
+  if (!std::all_of(input.begin(), input.end(), [](const Point& p) { return p.w() > 0; }))
+    return triangulate_t2(input).tr;
   if (input.size() > Triangulation::none / 6)
     throw BadInput("triangulate: more than " + std::to_string(Triangulation::none / 6) + " points");
   Triangulation tr(std::vector<Point>(input.begin(), input.end()));

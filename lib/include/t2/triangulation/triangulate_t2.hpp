@@ -1,0 +1,86 @@
+#pragma once
+/// @file triangulate_t2.hpp
+/// @brief A triangulation of points anywhere in T² (front, back, on Ω) by the incremental
+/// insertion of seed 000, §5.3, Algorithm 9: inside a face, on an edge, outside the hull; the
+/// point that destroys the hull takes the place of v∞; the antipode of a hull vertex z joins z
+/// by the half great circle along the bisector of the hull angle at z (figures 5.18–5.20).
+///
+/// **Order.** The first point a, the first point b ≠ ±a, the first point c off the great
+/// circle of a and b make the first triangle (with v∞, triangulation.hpp); then every other
+/// point in input order, except that a point p whose antipode ¬p lies inside a hull edge waits
+/// (see *Undefined*) until the hull is gone, and is inserted right after the point that
+/// destroyed it.
+///
+/// **While the hull exists** (the points inserted lie in an open hemisphere, v∞ is a vertex),
+/// a new point p is compared with every hull edge a → b (interior to its left): let `pos` count
+/// the edges with orient(a, b, p) > 0. The closed hull is the intersection of those closed
+/// half-planes, so ¬p lies in the closed hull iff pos = 0.
+///  - pos > 0 and p sees no edge (orient < 0 for none): p is in the closed hull; the walk
+///    finds its face, edge or vertex (insert in the face, on the edge, or merge a duplicate).
+///  - pos > 0 and p sees some edge strictly: the hull survives. Insert p in the infinite face of
+///    such an edge and flip away the reflex angles at p (step 35, `detail::flip_hull_chain`).
+///  - pos = 0, ¬p strictly inside the hull: p sees every hull edge strictly; p replaces v∞ in
+///    every infinite face (b, a, v∞), which becomes the triangle (b, a, p), counter-clockwise.
+///    The triangles now cover the sphere and v∞ is gone for good.
+///  - pos = 0, ¬p a hull vertex z (step 31): the same replacement; the two faces (z, u, ¬z) and
+///    (w, z, ¬z) at the hull edges u → z and z → w have orient 0 (*lunes*): their common edge
+///    z → ¬z is the half great circle leaving z along the bisector of the hull angle u z w,
+///    outwards (`AntipodalEdge`; antipodal_edge.hpp proves that this keeps the subdivision
+///    planar). A hull edge collinear with z but not at z gives a *flat* face (three vertices on
+///    one great circle, no two antipodal, no area), as does every later point inserted on a
+///    hull edge of a lune (figure 5.19).
+///  - pos = 0, ¬p inside a hull edge: the face (b, a, p) would be bounded by a whole great
+///    circle; p waits for the hull to disappear.
+///
+/// **Once the hull is gone** every point falls inside a face (a proper triangle or a lune), on
+/// an edge, or on a vertex; a point on the antipodal edge z → ¬z splits both lunes into four
+/// proper triangles (figure 5.20). Point location is a visibility walk with the exact side of
+/// every edge (the bisector side for z → ¬z); on the sphere a visibility walk may circle, so
+/// after 4·(faces) + 64 steps it gives way to a scan of all faces (which also settles points on
+/// flat faces, whose edges overlap). A lune is the intersection of two open hemispheres (its
+/// angle is below 180°, antipodal_edge.hpp), so "left of its three edges" is its interior.
+///
+/// **Running time.** O(n) per point in the worst case (the hull test, a walk of O(n) faces,
+/// O(n) flips), O(n²) in all, as the seed says; on random input the walk dominates.
+///
+/// **Undefined** (throws `t2::Undefined`, exit status 3 of `t2 triangulate`), naming the points:
+/// all points on one great circle and in no open half of it (no triangle, and the circle is no
+/// hull either); and a point whose antipode lies inside a hull edge of all the others, with no
+/// antipodal pair among them: every other point lies in the closed hemisphere of that edge's
+/// great circle, the open other half holds no vertex, and no proper triangle or lune with
+/// vertices on the circle covers it — the face there would be a hemisphere bounded by the
+/// whole circle, which Algorithm 9 cannot make.
+
+#include <span>
+#include <vector>
+
+#include "t2/point.hpp"
+#include "t2/triangulation/antipodal_edge.hpp"
+#include "t2/triangulation/triangulation.hpp"
+
+namespace t2 {
+
+/// A triangulation of T² input with the antipodal edges it contains.
+struct TriangulationT2 {
+  Triangulation tr;                   ///< the faces (lunes and flat faces included)
+  std::vector<AntipodalEdge> lunes;   ///< one entry per antipodal edge z → ¬z ever created
+};
+
+/// The triangulation of any points of T² by Algorithm 9 (see the file comment): every point is
+/// a vertex or a reported duplicate. Throws `Undefined` in the cases of the file comment,
+/// `BadInput` for more than 715 827 882 points.
+TriangulationT2 triangulate_t2(std::span<const Point> input);
+
+/// What a face is: a proper triangle (orient > 0), a lune (two antipodal vertices, orient 0)
+/// or flat (orient 0, no antipodal pair: three vertices on one great circle, no area).
+enum class FaceKind { proper, lune, flat };
+
+/// The kind of the finite face t of tr.
+FaceKind face_kind(const Triangulation& tr, Triangulation::Index t);
+
+/// The exact side of p of the edge opposite slot i of the finite face t: orient for an edge
+/// between points that are not antipodal, `side_of_antipodal_edge` for an edge z → ¬z.
+Sign side_of_edge(const Triangulation& tr, std::span<const AntipodalEdge> lunes, Triangulation::Index t, int i,
+                  const Point& p);
+
+}  // namespace t2

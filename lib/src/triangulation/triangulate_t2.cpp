@@ -1,0 +1,281 @@
+// Algorithm 9 of seed 000 on T² (see triangulate_t2.hpp for the cases, the order and the proofs).
+#include "t2/triangulation/triangulate_t2.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "t2/error.hpp"
+#include "t2/hull/convex_hull.hpp"
+#include "t2/lexicographic.hpp"
+#include "t2/orient.hpp"
+#include "t2/triangulation/triangulate.hpp"
+
+namespace t2 {
+
+using Index = Triangulation::Index;
+constexpr Index kInf = Triangulation::infinite, kNone = Triangulation::none;
+
+FaceKind face_kind(const Triangulation& tr, Index t) {
+  const Point &a = tr.point(tr.vertex(t, 0)), &b = tr.point(tr.vertex(t, 1)), &c = tr.point(tr.vertex(t, 2));
+  if (orient(a, b, c) != ZERO) return FaceKind::proper;
+  const bool lune = a == antipode(b) || b == antipode(c) || c == antipode(a);
+  return lune ? FaceKind::lune : FaceKind::flat;
+}
+
+Sign side_of_edge(const Triangulation& tr, std::span<const AntipodalEdge> lunes, Index t, int i, const Point& p) {
+  const Index a = tr.vertex(t, (i + 1) % 3), b = tr.vertex(t, (i + 2) % 3);
+  const Sign o = orient(tr.point(a), tr.point(b), p);
+  if (o != ZERO || !(tr.point(a) == antipode(tr.point(b)))) return o;
+  for (const AntipodalEdge& e : lunes) {
+    if (e.z == a && e.nz == b) return side_of_antipodal_edge(tr.points(), e, p);
+    if (e.z == b && e.nz == a) return static_cast<Sign>(-side_of_antipodal_edge(tr.points(), e, p));
+  }
+  throw std::logic_error("side_of_edge: an antipodal edge without its bisector");
+}
+
+namespace {
+
+std::string point_name(std::span<const Point> input, Index k) {
+  return "p" + std::to_string(k) + " = " + to_string(input[k]);
+}
+
+/// The incremental construction (Algorithm 9) on one triangulation.
+class Builder {
+ public:
+  Builder(Triangulation& tr, std::vector<AntipodalEdge>& lunes) : tr_(tr), lunes_(lunes) {}
+
+  /// Inserts the point p (an index into tr's points); returns false when p must wait.
+  bool insert(Index p) {
+    return hull_ ? insert_with_hull(p) : insert_located(p, locate(P(p)));
+  }
+  bool hull() const { return hull_; }
+  /// The hull edge whose inside holds ¬p (after insert returned false).
+  std::pair<Index, Index> blocking_edge() const { return blocking_; }
+
+ private:
+  /// Where a point is: inside face t, on the edge opposite slot i of t, or on vertex i of t.
+  struct Where {
+    enum Kind { none, face, edge, vertex } kind = none;
+    Index t = 0;
+    int i = 0;
+  };
+
+  const Point& P(Index v) const { return tr_.point(v); }
+  Sign side(Index t, int i, const Point& p) const { return side_of_edge(tr_, lunes_, t, i, p); }
+
+  /// What p is in the closed face t (finite), or `none` (outside it, or t is flat).
+  Where classify(Index t, const Point& p) const {
+    Sign s[3];
+    for (int i = 0; i < 3; ++i)
+      if ((s[i] = side(t, i, p)) == NEGATIVE) return {};
+    const int zeros = (s[0] == ZERO) + (s[1] == ZERO) + (s[2] == ZERO);
+    if (zeros == 0) return {Where::face, t, 0};
+    const FaceKind kind = face_kind(tr_, t);
+    if (kind == FaceKind::flat) return {};
+    for (int i = 0; i < 3; ++i)
+      if (P(tr_.vertex(t, i)) == p) return {Where::vertex, t, i};
+    if (kind == FaceKind::proper) {  // one zero: the edge; two: the vertex, handled above
+      for (int i = 0; i < 3; ++i)
+        if (s[i] == ZERO) return {Where::edge, t, i};
+    }
+    // A lune: p on its antipodal edge (one zero), or on its half circle through the third
+    // vertex (two zeros), in one of the two arcs.
+    for (int i = 0; i < 3; ++i) {
+      if (s[i] != ZERO) continue;
+      const Point &a = P(tr_.vertex(t, (i + 1) % 3)), &b = P(tr_.vertex(t, (i + 2) % 3));
+      if (a == antipode(b) ? zeros == 1 : inside_arc(a, b, p)) return {Where::edge, t, i};
+    }
+    throw std::logic_error("triangulate_t2: a point on a lune's boundary and on none of its edges");
+  }
+
+  //> t2-walk
+  /// The visibility walk from the face last_ with the exact sides; after 4·(faces) + 64
+  /// steps (it may circle on the sphere) or at a flat face, a scan of all faces.
+  Where locate(const Point& p) {
+    Index t = last_;
+    int from = -1;
+    for (std::size_t steps = 4 * tr_.size() + 64; steps > 0; --steps) {
+      rng_ ^= rng_ << 13, rng_ ^= rng_ >> 17, rng_ ^= rng_ << 5;
+      const int r = static_cast<int>(rng_ % 3);
+      int cross = -1;
+      for (int k = 0; k < 3 && cross < 0; ++k) {
+        const int i = (r + k) % 3;
+        if (i != from && side(t, i, p) == NEGATIVE) cross = i;
+      }
+      if (cross < 0) {
+        const Where w = classify(t, p);
+        if (w.kind != Where::none) return w;
+        break;  // a flat face
+      }
+      from = static_cast<int>(tr_.twin(t, cross) % 3);
+      t = tr_.neighbor(t, cross);
+    }
+    for (Index f = 0; f < tr_.size(); ++f)
+      if (!tr_.is_infinite(f))
+        if (const Where w = classify(f, p); w.kind != Where::none) return w;
+    throw std::logic_error("triangulate_t2: a point in no face");
+  }
+  //< t2-walk
+
+  bool insert_located(Index p, Where w) {
+    if (w.kind == Where::vertex) {
+      tr_.add_duplicate(p, tr_.vertex(w.t, w.i));
+      return true;
+    }
+    if (w.kind == Where::face) {
+      tr_.insert_in_face(w.t, p);
+    } else {
+      tr_.insert_on_edge(w.t, w.i, p);  // an infinite neighbour stays infinite: inf_ holds
+    }
+    last_ = w.t;
+    return true;
+  }
+
+  //> t2-outside
+  bool insert_with_hull(Index p) {
+    const Point& q = P(p);
+    // The hull edges a → b, from the infinite triangles (b, a, v∞) around v∞.
+    int pos = 0;
+    Index seen = kNone, t = inf_;
+    std::vector<std::pair<Index, Index>> zero;  // edges whose circle holds p
+    do {
+      const int k = tr_.slot(t, kInf);
+      const Index b = tr_.vertex(t, (k + 1) % 3), a = tr_.vertex(t, (k + 2) % 3);
+      const Sign o = orient(P(a), P(b), q);
+      if (o > 0) ++pos;
+      if (o < 0) seen = t;
+      if (o == 0) zero.emplace_back(a, b);
+      t = tr_.neighbor(t, (k + 1) % 3);
+    } while (t != inf_);
+    if (seen == kNone)  // p in the closed hull: a face, an edge or a vertex
+      return insert_located(p, locate(q));
+    if (pos > 0) {  // the hull survives (step 34, 35)
+      tr_.insert_in_face(seen, p);
+      const Index n = static_cast<Index>(tr_.size());
+      for (Index f : {seen, n - 2, n - 1}) {
+        if (tr_.vertex(f, 2) == kInf) inf_ = detail::flip_hull_chain(tr_, f);
+        if (tr_.vertex(f, 1) == kInf) inf_ = detail::flip_hull_chain(tr_, f);
+      }
+      if (tr_.is_infinite(last_)) last_ = find_finite();
+      return true;
+    }
+    // ¬p is in the closed hull: the hull is destroyed. Where is ¬p?
+    const Point np = antipode(q);
+    std::pair<Index, Index> before{kNone, kNone}, after = before;
+    for (auto [a, b] : zero) {
+      if (P(b) == np) before = {a, b};  // u → z
+      if (P(a) == np) after = {a, b};   // z → w
+    }
+    if (!zero.empty() && before.first == kNone) {  // ¬p inside a hull edge: wait
+      for (auto [a, b] : zero)
+        if (inside_arc(P(a), P(b), np)) blocking_ = {a, b};
+      return false;
+    }
+    tr_.rename_vertex(inf_, kInf, p);  // p replaces v∞ everywhere
+    if (before.first != kNone)  // step 31: the antipode of the hull vertex z
+      lunes_.push_back({before.second, p, before.first, after.second});
+    hull_ = false;
+    return true;
+  }
+  //< t2-outside
+
+  Index find_finite() const {
+    for (Index f = 0; f < tr_.size(); ++f)
+      if (!tr_.is_infinite(f)) return f;
+    throw std::logic_error("triangulate_t2: no finite triangle");
+  }
+
+  Triangulation& tr_;
+  std::vector<AntipodalEdge>& lunes_;
+  bool hull_ = true;
+  Index inf_ = 1;   // an infinite triangle while the hull exists
+  Index last_ = 0;  // a finite triangle near the last insertion
+  std::uint32_t rng_ = 2463534242u;
+  std::pair<Index, Index> blocking_{};
+};
+
+/// All points on the great circle of a and b: no triangle (dimension 1 or 0) if they lie in an
+/// open half of it, else Undefined.
+void collinear(std::span<const Point> input, Triangulation& tr, bool one_point) {
+  try {
+    (void)convex_hull(input);
+  } catch (const NoHull& e) {
+    throw Undefined(std::string("triangulate: all points lie on one great circle, in no open half of it, so no "
+                                "triangle and no hull has them as vertices: ") + e.what());
+  }
+  std::vector<Index> s(input.size());
+  for (Index k = 0; k < s.size(); ++k) s[k] = k;
+  std::stable_sort(s.begin(), s.end(), [&](Index a, Index b) {
+    return compare_lexicographic(input[a], input[b]) == NEGATIVE;
+  });
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (compare_lexicographic(input[s[k - 1]], input[s[k]]) == ZERO) {
+      Index j = k - 1;
+      while (j > 0 && compare_lexicographic(input[s[j - 1]], input[s[k]]) == ZERO) --j;
+      tr.add_duplicate(s[k], s[j]);
+    }
+  tr.set_dimension(one_point ? 0 : 1);
+}
+
+}  // namespace
+
+//> triangulate-t2
+TriangulationT2 triangulate_t2(std::span<const Point> input) {
+  if (input.size() > kNone / 6)
+    throw BadInput("triangulate: more than " + std::to_string(kNone / 6) + " points");
+  TriangulationT2 out{Triangulation({input.begin(), input.end()}), {}};
+  Triangulation& tr = out.tr;
+  const Index n = static_cast<Index>(input.size());
+  if (n == 0) return out;
+  // the first triangle: p0, b the first point ≠ ±p0, c the first off their circle
+  const Point& a = input[0];
+  Index b = 1, c = 0;
+  while (b < n && (input[b] == a || input[b] == antipode(a))) ++b;
+  for (Index k = b + 1; k < n && c == 0; ++k)
+    if (orient(a, input[b], input[k]) != ZERO) c = k;
+  if (c == 0) {  // all on one great circle
+    auto same = [&](const Point& p) { return p == a; };
+    collinear(input, tr, std::all_of(input.begin(), input.end(), same));
+    tr.finish();
+    return out;
+  }
+  if (orient(a, input[b], input[c]) > 0) tr.make_triangle(0, b, c, n);
+  else tr.make_triangle(b, 0, c, n);
+  Builder builder(tr, out.lunes);
+  std::vector<Index> waiting;  // points whose antipode lies inside a hull edge
+  for (Index p = 1; p < n; ++p) {
+    if (p == b || p == c) continue;
+    const bool had_hull = builder.hull();
+    if (!builder.insert(p)) waiting.push_back(p);
+    if (had_hull && !builder.hull()) {  // the hull is gone: the waiting go in now
+      for (Index q : waiting) builder.insert(q);
+      waiting.clear();
+    }
+  }
+  // the hull survived the input: the waiting again (¬p may now be inside the hull)
+  std::vector<Index> still;
+  for (Index q : waiting) {
+    if (!builder.insert(q)) {
+      still.push_back(q);
+    } else if (!builder.hull()) {
+      for (Index r : still) builder.insert(r);
+      still.clear();
+    }
+  }
+  //< triangulate-t2
+  if (!still.empty()) {
+    builder.insert(still.front());  // sets the blocking edge again
+    const auto [e0, e1] = builder.blocking_edge();
+    throw Undefined("triangulate: the antipode of " + point_name(input, still.front()) +
+                    " lies inside the hull edge from " + point_name(input, e0) + " to " + point_name(input, e1) +
+                    " of the other points, which lie in the closed hemisphere of that edge's great circle: the "
+                    "face beyond it would be the open hemisphere bounded by the whole circle, not a triangle");
+  }
+  tr.finish();
+  return out;
+}
+
+}  // namespace t2
