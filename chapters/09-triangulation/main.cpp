@@ -1,13 +1,15 @@
 // Chapter 09: triangulations. The counts of Euler's formula, the operations of the flat
 // structure (insertion in a face, on an edge, outside the hull, the flip), the sweep of
 // t2/triangulation/triangulate.hpp, and the remembering walk on a Delaunay triangulation and on
-// the sweep's; the figures of the chapter in both models (seed 000, figures 5.12-5.17 redrawn).
+// the sweep's; the figures of the chapter in both models (seed 000, figures 5.12-5.20 redrawn).
 #include <t2/t2.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/triangulation/delaunay.hpp>
 #include <t2/triangulation/triangulate.hpp>
+#include <t2/triangulation/triangulate_t2.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -131,6 +133,71 @@ void walks() {
   std::cout << "\n";
 }
 
+// Seed 000, figures 5.18-5.20 redrawn from t2::triangulate_t2: the hull triangle z w u, the
+// antipode of z (5.18, the two lunes at the antipodal edge along the bisector), then t inside the
+// old hull edge z -> w (5.19, a flat face), or s on the antipodal edge (5.20, the lunes gone).
+// Lunes are drawn through the midpoint of their antipodal edge (a double, for the picture only:
+// the library decides sides exactly, t2/triangulation/antipodal_edge.hpp); flat faces as thick
+// orange segments; the lune at w green, the one at u purple, their common edge red.
+void antipodal_figures(const std::filesystem::path& dir, int& written, int& count) {
+  dr::PlaneView plane;
+  plane.half_width = 5;
+  dr::SphereView sphere;
+  sphere.lat = 30;  // from behind the antipodal edge: both lunes and the hull in sight
+  sphere.lon = -135;
+  // z at the centre of the front side, where the spherical bisector is the planar one: the
+  // unit vectors to w and u are (1, 0) and (0.6, 0.8), the edge z -> ¬z leaves along (-2, -1).
+  const Point z = Point::cartesian(0, 0), w = Point::cartesian(2, 0), u = Point::cartesian(3, 4);
+  // The midpoint of the half great circle z -> ¬z along the outward bisector: -(n1 + n2) with
+  // n1, n2 the unit poles of the hull edges u -> z and z -> w (antipodal_edge.hpp).
+  auto bisector_midpoint = [](const Point& z, const Point& u, const Point& w) {
+    auto v = [](const Point& p) { return std::array<double, 3>{p.w(), p.x(), p.y()}; };
+    auto cross = [](std::array<double, 3> a, std::array<double, 3> b) {
+      std::array<double, 3> c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      return std::array<double, 3>{c[0] / n, c[1] / n, c[2] / n};
+    };
+    const auto n1 = cross(v(u), v(z)), n2 = cross(v(z), v(w));
+    return Point(-(n1[0] + n2[0]), -(n1[1] + n2[1]), -(n1[2] + n2[2]));
+  };
+  auto draw = [&](const std::vector<Point>& P, const std::string& name) {
+    const t2::TriangulationT2 r = t2::triangulate_t2(P);
+    const Triangulation& tr = r.tr;
+    dr::Figure f;
+    const dr::Style proper = dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.1);
+    for (Index t = 0; t < tr.size(); ++t) {
+      const Index a = tr.vertex(t, 0), b = tr.vertex(t, 1), c = tr.vertex(t, 2);
+      switch (t2::face_kind(tr, t)) {
+        case t2::FaceKind::proper: f.add(std::vector<Point>{P[a], P[b], P[c]}, proper); break;
+        case t2::FaceKind::flat:
+          for (auto [x, y] : {std::pair{a, b}, {b, c}, {c, a}}) f.segment(P[x], P[y], dr::Style().color("#ff7f0e").width(3));
+          break;
+        case t2::FaceKind::lune: {
+          // rotate so that (x, y) is the antipodal pair, k the third vertex
+          Index x = a, y = b, k = c;
+          if (P[b] == t2::antipode(P[c])) x = b, y = c, k = a;
+          if (P[c] == t2::antipode(P[a])) x = c, y = a, k = b;
+          const t2::AntipodalEdge& e = r.lunes.front();
+          const Point m = bisector_midpoint(P[e.z], P[e.u], P[e.w]);
+          const bool at_w = t2::side_of_antipodal_edge(P, e, P[k]) > 0;  // green, else purple
+          f.add(std::vector<Point>{P[x], m, P[y], P[k]},  // x -> m -> y: the half circle
+                dr::Style().color("#1f77b4").fill(at_w ? "#2ca02c" : "#9467bd").fill_opacity(0.3));
+          f.polyline(std::vector<Point>{P[x], m, P[y]}, dr::Style().color("#d62728").width(2.5));
+          break;
+        }
+      }
+    }
+    const std::string names[] = {"z", "w", "u", "¬z", name == "flat-face" ? "t" : "s"};
+    for (std::size_t k = 0; k < P.size(); ++k) f.add(P[k], dr::Style().label(names[k]));
+    written += dr::save(f, plane, dir / (name + "-plane.svg"));
+    written += dr::save(f, sphere, dir / (name + "-sphere.svg"));
+    count += 2;
+  };
+  draw({z, w, u, t2::antipode(z)}, "antipode");
+  draw({z, w, u, t2::antipode(z), Point::cartesian(1, 0)}, "flat-face");
+  draw({z, w, u, t2::antipode(z), Point(0, -2, -1)}, "lunes-gone");  // s: the edge's midpoint, on Ω
+}
+
 void figures(const std::filesystem::path& dir) {
   int written = 0, count = 0;
   dr::PlaneView plane;
@@ -177,6 +244,7 @@ void figures(const std::filesystem::path& dir) {
     if (first_edges.empty() && t2::orient(Q[a], Q[b], Q[9]) < 0) first_edges = {{a, 9}, {b, 9}};
   draw(base, Q, Triangulation::none, first_edges, "outside-before");
   draw(t2::triangulate(Q), Q, 9, {}, "outside-after");
+  antipodal_figures(dir, written, count);
   std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
 }
 

@@ -73,7 +73,11 @@ TriangulationT2 triangulate_t2(std::span<const Point> input);
 
 /// What a face is: a proper triangle (orient > 0), a lune (two antipodal vertices, orient 0)
 /// or flat (orient 0, no antipodal pair: three vertices on one great circle, no area).
-enum class FaceKind { proper, lune, flat };
+enum class FaceKind {
+  proper,  ///< orient > 0
+  lune,    ///< two antipodal vertices: the region between two half great circles
+  flat     ///< three vertices on one great circle, no two antipodal: no area
+};
 
 /// The kind of the finite face t of tr.
 FaceKind face_kind(const Triangulation& tr, Triangulation::Index t);
