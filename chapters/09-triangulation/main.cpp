@@ -164,13 +164,13 @@ void antipodal_figures(const std::filesystem::path& dir, int& written, int& coun
     const t2::TriangulationT2 r = t2::triangulate_t2(P);
     const Triangulation& tr = r.tr;
     dr::Figure f;
-    const dr::Style proper = dr::Style().color("#1f77b4").fill("#1f77b4").fill_opacity(0.1);
+    const dr::Style proper = dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.1);
     for (Index t = 0; t < tr.size(); ++t) {
       const Index a = tr.vertex(t, 0), b = tr.vertex(t, 1), c = tr.vertex(t, 2);
       switch (t2::face_kind(tr, t)) {
         case t2::FaceKind::proper: f.add(std::vector<Point>{P[a], P[b], P[c]}, proper); break;
         case t2::FaceKind::flat:
-          for (auto [x, y] : {std::pair{a, b}, {b, c}, {c, a}}) f.segment(P[x], P[y], dr::Style().color("#ff7f0e").width(3));
+          for (auto [x, y] : {std::pair{a, b}, {b, c}, {c, a}}) f.segment(P[x], P[y], dr::Style().color(pal::orange).width(3));
           break;
         case t2::FaceKind::lune: {
           // rotate so that (x, y) is the antipodal pair, k the third vertex
@@ -181,8 +181,8 @@ void antipodal_figures(const std::filesystem::path& dir, int& written, int& coun
           const Point m = bisector_midpoint(P[e.z], P[e.u], P[e.w]);
           const bool at_w = t2::side_of_antipodal_edge(P, e, P[k]) > 0;  // green, else purple
           f.add(std::vector<Point>{P[x], m, P[y], P[k]},  // x -> m -> y: the half circle
-                dr::Style().color("#1f77b4").fill(at_w ? "#2ca02c" : "#9467bd").fill_opacity(0.3));
-          f.polyline(std::vector<Point>{P[x], m, P[y]}, dr::Style().color("#d62728").width(2.5));
+                dr::Style().color(pal::blue).fill(at_w ? pal::green : pal::purple).fill_opacity(0.3));
+          f.polyline(std::vector<Point>{P[x], m, P[y]}, dr::Style().color(pal::red).width(2.5));
           break;
         }
       }
