@@ -14,7 +14,8 @@
 //
 // PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull|raw|exact;
 //               layers jarvis|graham (the two ways of seed 003; size: the number of layers);
-//               delaunay t2|divide|cgal|raw|exact (divide: Guibas-Stolfi divide and conquer;
+//               delaunay t2|owned|divide|cgal|raw|exact (owned: t2::delaunay(std::move(P)), the
+//               result takes the input vector; divide: Guibas-Stolfi divide and conquer;
 //               raw: t2's code on plain double predicates, inexact; exact: exact arithmetic on
 //               every call, no floating-point filter).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
@@ -181,8 +182,9 @@ Run layers_run(const std::string& impl, const std::vector<t2::Point>& P) {
 // not pay).
 std::size_t finite_count(const t2::Triangulation& tr) { return tr.size() - tr.hull_edges().size(); }
 
-Run delaunay_run(const std::string& impl, const std::vector<t2::Point>& P) {
+Run delaunay_run(const std::string& impl, std::vector<t2::Point>& P) {
   if (impl == "t2") return [&P] { return finite_count(t2::delaunay(P)); };
+  if (impl == "owned") return [&P] { return finite_count(t2::delaunay(std::move(P))); };
   if (impl == "divide") return [&P] { return finite_count(t2::delaunay_divide(P)); };
   if (impl == "raw") return [&P] { return finite_count(t2::delaunay_with<t2bench::RawDelaunayKernel>(P)); };
   if (impl == "exact") return [&P] { return finite_count(t2::delaunay_with<ExactOnlyKernel>(P)); };
@@ -210,7 +212,7 @@ int work(int argc, char** argv) {
   }
   if (problem != "hull" && problem != "delaunay" && problem != "layers")
     throw Usage("unknown problem " + problem + " (hull, delaunay, layers)");
-  const std::vector<t2::Point> P = make_input(input, n, seed);
+  std::vector<t2::Point> P = make_input(input, n, seed);  // "owned" hands it to the result
   const Run run = problem == "hull" ? hull_run(impl, P) : problem == "layers" ? layers_run(impl, P) : delaunay_run(impl, P);
   const long input_rss = rss_kb();
   const auto w0 = std::chrono::steady_clock::now();

@@ -200,5 +200,26 @@ TEST(Delaunay, KernelTraceHooks) {
   EXPECT_TRUE(triangle_set(tr) == triangle_set(delaunay(pts)));
 }
 
+// delaunay(std::vector<Point>&&) takes the vector over and moves its copy back in place: the same
+// result as from a caller's points, on general, duplicated, collinear and T² input.
+TEST(Delaunay, TakenVectorGivesTheSameResult) {
+  auto dup = testing::grid_points(300, 4);
+  for (std::size_t k = 0; k < 100; ++k) dup.push_back(dup[(k * 37) % dup.size()]);
+  std::vector<Point> line;
+  for (int k = 0; k < 20; ++k) line.push_back(Point::cartesian((k * 7) % 20, (k * 7) % 20));
+  line.push_back(line[3]);
+  auto sides = testing::gen_points(gen::Kind::uniform, 200, 9);
+  for (std::size_t k = 0; k < sides.size(); k += 3) sides[k] = antipode(sides[k]);
+  for (const auto& pts : {testing::gen_points(gen::Kind::uniform, 2000, 11), dup, line, sides}) {
+    const Triangulation kept = delaunay(pts);
+    const Triangulation taken = delaunay(std::vector<Point>(pts));
+    EXPECT_EQ(taken.dimension(), kept.dimension());
+    EXPECT_TRUE(taken.points() == pts);
+    EXPECT_TRUE(triangle_set(taken) == triangle_set(kept));
+    EXPECT_EQ(taken.duplicates(), kept.duplicates());
+    EXPECT_TRUE(taken.valid()) << taken.validate();
+  }
+}
+
 }  // namespace
 }  // namespace t2

@@ -22,6 +22,7 @@ const std::vector<Impl>& impls() {
       {"layers", "layers", "jarvis", "t2::convex_layers by Jarvis's march on what is left (seed 003), O(n^2)", true},
       {"layers-graham", "layers", "graham", "t2::convex_layers by Graham's scan on what is left, O(n^2 log n)", true},
       {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
+      {"owned", "delaunay", "owned", "t2::delaunay(std::move(points)): the result takes the input vector (one copy of the points)", true},
       {"divide", "delaunay", "divide", "t2::delaunay_divide (Guibas-Stolfi divide and conquer, quad-edge)", true},
       {"cgal", "", "cgal", "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay)", true},
       {"qhull", "hull", "qhull", "qhull (libqhull_r, default options: merges nearly collinear facets)", false},

@@ -9,6 +9,7 @@
 
 #include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
+#include "t2/triangulation/spatial_sort.hpp"
 
 namespace t2 {
 
@@ -112,12 +113,23 @@ void Triangulation::rename_vertex(Index t, Index from, Index to) {
   } while (t != start);
 }
 
-void Triangulation::renumber(const std::vector<Index>& order, std::span<const Point> input) {
+void Triangulation::renumber_indices(const std::vector<Index>& order) {
   for (Index& v : v_)
     if (v != infinite) v = order[v];
   for (auto& [d, k] : duplicates_) d = order[d], k = order[k];
-  points_ = {};  // free the sorted copy first: the peak stays one copy of the points
+}
+
+void Triangulation::renumber(std::vector<Index> order, std::span<const Point> input) {
+  renumber_indices(order);
+  // Free the order and the sorted copy before the copy (`v = {}` would keep the capacity).
+  std::vector<Index>().swap(order);
+  std::vector<Point>().swap(points_);
   points_.assign(input.begin(), input.end());
+}
+
+void Triangulation::renumber(std::vector<Index> order) {
+  renumber_indices(order);
+  unpermute(points_, order);
 }
 
 void Triangulation::finish() {

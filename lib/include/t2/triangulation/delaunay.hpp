@@ -46,7 +46,10 @@
 ///
 /// **Memory.** While building: a copy of the points in insertion order (24 bytes a point), the
 /// order itself (4), the triangles (2 per point, 24 bytes each: 48), reserved exactly once. The
-/// result holds the points (24) and the triangles (48): 72 bytes per point.
+/// result holds the points (24) and the triangles (48): 72 bytes per point. The order and the
+/// copy are freed before the result's points are made, so with the caller's points the peak
+/// is 100 bytes a point; `delaunay(std::vector<Point>&&)` takes the caller's vector instead,
+/// frees it once copied, moves the copy back in place at the end, and peaks at 76.
 ///
 /// **Kernel.** `delaunay_with<K>` takes the predicates from a kernel type K (orient, in_circle,
 /// compare_xy on `t2::Point`) and calls its trace hooks (inserted, flipped); the default
@@ -157,32 +160,32 @@ void finish_degenerate(const K& k, Triangulation& tr, std::vector<std::uint32_t>
   tr.finish();
 }
 
-}  // namespace detail
-
-//> delaunay
-/// The Delaunay triangulation of points of T² with the predicates of kernel K; see the file
-/// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
-/// not all in front. Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
-/// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
-template <class K = DelaunayKernel>
-Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
-  using Index = Triangulation::Index;
-  if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }))
-    return detail::delaunay_t2(input, kernel);
-  if (input.size() > Triangulation::none / 6)  // half-edges 3t + i of 2n triangles fit 32 bits
-    throw BadInput("delaunay: more than " + std::to_string(Triangulation::none / 6) + " points");
-  // The triangulation is built on a copy of the points in insertion order (vertex m is the m-th
-  // inserted point), so that the walk and the flips touch memory in order; `renumber` restores
-  // the input indices and points at the end.
-  std::vector<std::uint32_t> order = spatial_order(input);
+/// The points input[order[m]] for every m.
+inline std::vector<Point> in_order(std::span<const Point> input, const std::vector<std::uint32_t>& order) {
   std::vector<Point> sorted;
   sorted.reserve(order.size());
   for (std::uint32_t k : order) sorted.push_back(input[k]);
-  Triangulation tr(std::move(sorted));
+  return sorted;
+}
+
+/// The incremental construction on the points of `tr`, which are those of the input in the
+/// insertion `order` (vertex m is the m-th inserted point); at the end the input indices are
+/// restored by `renumber`: from a copy of `input`, or in place when `input` is null (the
+/// construction owns the points).
+template <class K>
+Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t> order,
+                          const std::span<const Point>* input) {
+  using Index = Triangulation::Index;
   const auto& pts = tr.points();
   const Index n = static_cast<Index>(order.size());
+  auto restore = [&](std::vector<std::uint32_t> o) {
+    if (input != nullptr)
+      tr.renumber(std::move(o), *input);
+    else
+      tr.renumber(std::move(o));
+  };
   auto degenerate = [&](int dimension) {
-    tr.renumber(order, input);
+    restore(order);
     detail::finish_degenerate(kernel, tr, order, dimension);
     return std::move(tr);
   };
@@ -245,9 +248,46 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
     }
   }
   //< delaunay-loop
-  tr.renumber(order, input);
+  restore(std::move(order));
   tr.finish();
   return tr;
+}
+
+}  // namespace detail
+
+//> delaunay
+/// The Delaunay triangulation of points of T² with the predicates of kernel K; see the file
+/// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
+/// not all in front. Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
+/// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
+template <class K = DelaunayKernel>
+Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
+  if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }))
+    return detail::delaunay_t2(input, kernel);
+  if (input.size() > Triangulation::none / 6)  // half-edges 3t + i of 2n triangles fit 32 bits
+    throw BadInput("delaunay: more than " + std::to_string(Triangulation::none / 6) + " points");
+  // The triangulation is built on a copy of the points in insertion order (vertex m is the m-th
+  // inserted point), so that the walk and the flips touch memory in order; `renumber` restores
+  // the input indices and points at the end.
+  std::vector<std::uint32_t> order = spatial_order(input);
+  std::vector<Point> sorted = detail::in_order(input, order);
+  return detail::incremental(kernel, Triangulation(std::move(sorted)), std::move(order), &input);
+}
+
+/// The same on a vector of points that the result takes over: the copy in insertion order
+/// replaces it, and is moved back in place at the end, so the construction holds one copy of
+/// the points (the peak: 76 bytes a point with the order and the triangles, against 100 when
+/// the caller keeps its points and the result copies them; the move back costs time).
+template <class K = DelaunayKernel>
+Triangulation delaunay_with(std::vector<Point>&& points, K kernel = {}) {
+  const std::span<const Point> input(points);
+  if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }) ||
+      input.size() > Triangulation::none / 6)
+    return delaunay_with(input, kernel);  // the T² assembly copies, or the size error
+  std::vector<std::uint32_t> order = spatial_order(input);
+  std::vector<Point> sorted = detail::in_order(input, order);
+  std::vector<Point>().swap(points);
+  return detail::incremental(kernel, Triangulation(std::move(sorted)), std::move(order), nullptr);
 }
 
 /// The Delaunay triangulation of front points with the exact predicates of the library (the
@@ -255,6 +295,8 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
 inline Triangulation delaunay(std::span<const Point> points) { return delaunay_with(points); }
 /// The same for a vector of points.
 inline Triangulation delaunay(const std::vector<Point>& points) { return delaunay_with(std::span<const Point>(points)); }
+/// The same for a vector of points that the result takes over (no second copy of the points).
+inline Triangulation delaunay(std::vector<Point>&& points) { return delaunay_with(std::move(points)); }
 //< delaunay
 
 }  // namespace t2

@@ -219,7 +219,7 @@ Triangulation delaunay_divide_with(std::span<const Point> input, K kernel = {}) 
   } else {
     tr.set_dimension(u.empty() ? -1 : u.size() == 1 ? 0 : 1);
   }
-  tr.renumber(u, input);
+  tr.renumber(std::move(u), input);
   for (auto [d, k] : dups.duplicates()) tr.add_duplicate(d, k);
   tr.finish();
   return tr;

@@ -93,4 +93,21 @@ inline std::vector<std::uint32_t> spatial_order(std::span<const Point> points, s
 }
 //< spatial-order
 
+/// Moves the points back from an insertion `order` (a permutation of their indices), in place:
+/// afterwards points[order[m]] is the old points[m]. Follows the cycles of the permutation with
+/// one bit per point, so a construction that owns the points restores them without a copy.
+inline void unpermute(std::vector<Point>& points, const std::vector<std::uint32_t>& order) {
+  std::vector<bool> done(points.size());
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    if (done[s]) continue;
+    Point carry = points[s];
+    std::size_t k = s;
+    do {
+      k = order[k];
+      std::swap(carry, points[k]);
+      done[k] = true;
+    } while (k != s);
+  }
+}
+
 }  // namespace t2

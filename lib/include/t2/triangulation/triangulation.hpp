@@ -171,7 +171,11 @@ class Triangulation {
   /// Gives vertex k the index order[k] everywhere (triangles, duplicates) and replaces the
   /// points by a copy of `input`, where input[order[k]] is the old point k: the algorithms build
   /// on a copy of the points in insertion order, for locality, and hand back input indices.
-  void renumber(const std::vector<Index>& order, std::span<const Point> input);
+  /// `order` and the old points are freed before the copy is made (the peak of a construction).
+  void renumber(std::vector<Index> order, std::span<const Point> input);
+  /// The same without a copy: the old point k moves to order[k] in place (the construction that
+  /// took the caller's vector of points, delaunay.hpp).
+  void renumber(std::vector<Index> order);
   /// Records that `dropped` equals `kept` (finished by `finish`).
   void add_duplicate(Index dropped, Index kept) { duplicates_.emplace_back(dropped, kept); }
   /// Sets the dimension (used by the algorithms for degenerate input).
@@ -202,6 +206,8 @@ class Triangulation {
   /// Rebuilds the k triangles tri[0..k) as the fan (p, ring[m], ring[m+1]) around p; ext[m] is the
   /// half-edge outside the edge ring[m] → ring[m+1].
   void make_fan(Index p, const Index* ring, const Index* ext, const Index* tri, int k);
+  /// Gives vertex k the index order[k] in the triangles and the duplicates.
+  void renumber_indices(const std::vector<Index>& order);
 
   std::vector<Point> points_;
   std::vector<Index> v_;  // 3 vertex indices per triangle
