@@ -20,7 +20,8 @@ inline const std::vector<HullAlgorithm>& all_algorithms() {
 }
 
 /// True when a and b are the same cyclic sequence of points of T² (equality in T²).
-inline bool same_cycle(const std::vector<Point>& a, const std::vector<Point>& b) {
+template <class P>
+bool same_cycle(const std::vector<P>& a, const std::vector<P>& b) {
   if (a.size() != b.size()) return false;
   if (a.empty()) return true;
   for (std::size_t r = 0; r < b.size(); ++r) {

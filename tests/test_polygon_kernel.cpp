@@ -2,11 +2,16 @@
 // lines and Ω, both signs) that satisfies all constraints, in exact homogeneous integers. The
 // region computed must hold all of them and its corners must be among them: then the two are
 // the same convex region (a convex region is the hull of its extreme points, which are such
-// meets). Also: star polygons contain their centre, convex polygons are their own kernel, and
-// the unbounded and degenerate cases.
+// meets). And against the O(n k) algorithm the library had before Lee and Preparata's
+// (polygon_kernel_oracle.hpp): the same corners, exactly, as a cyclic sequence. Also: star
+// polygons contain their centre, convex polygons are their own kernel, and the unbounded and
+// degenerate cases.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "hull_testing.hpp"
+#include "polygon_kernel_oracle.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull/polygon_kernel.hpp"
 #include "testing.hpp"
@@ -18,6 +23,40 @@ using gen::Kind;
 using testing::polygon_of;
 
 Integer dot(const ExactLine& l, const ExactPoint& p) { return l.W() * p.w() + l.X() * p.x() + l.Y() * p.y(); }
+
+// polygon_kernel's reading of P: repeated consecutive vertices dropped, a clockwise front-only
+// polygon reversed.
+std::vector<Point> as_read(const Polygon& P) {
+  std::vector<Point> V;
+  for (const Point& p : P)
+    if (V.empty() || !(V.back() == p)) V.push_back(p);
+  while (V.size() > 1 && V.back() == V.front()) V.pop_back();
+  if (std::all_of(V.begin(), V.end(), [](const Point& p) { return p.w() > 0; }) && orientation(V) < 0)
+    std::reverse(V.begin(), V.end());
+  return V;
+}
+
+// Lee and Preparata's corners are the oracle's, in the same cyclic order, and the first is
+// the least in the wxy order. Returns the number of corners.
+std::size_t expect_as_oracle(const Polygon& P, const std::string& what) {
+  const std::vector<ExactPoint> want = testing::oracle_kernel(as_read(P));
+  const PolygonKernel K = polygon_kernel(P);
+  EXPECT_TRUE(testing::same_cycle(K.vertices, want)) << what << ": " << K.vertices.size() << " corners, the oracle "
+                                                    << want.size();
+  for (std::size_t k = 1; k < K.vertices.size(); ++k)
+    EXPECT_LT(compare_lexicographic(K.vertices[0], K.vertices[k]), 0) << what;
+  return K.vertices.size();
+}
+
+// P with the run of `count` vertices from `from` moved to Ω along their directions from the
+// origin: a star polygon about the origin stays one, now unbounded, with edges along Ω.
+Polygon to_omega(Polygon P, std::size_t from, std::size_t count) {
+  for (std::size_t k = 0; k < count; ++k) {
+    Point& p = P[(from + k) % P.size()];
+    p = Point(0, p.x() / p.w(), p.y() / p.w());
+  }
+  return P;
+}
 
 std::vector<ExactLine> constraints(Polygon P) {
   if (std::all_of(P.begin(), P.end(), [](const Point& p) { return p.w() > 0; }) && orientation(P) < 0)
@@ -115,6 +154,8 @@ TEST(PolygonKernel, DegenerateKernels) {
   expect_kernel(comb, "comb");
   EXPECT_THROW(polygon_kernel(Polygon{Point(1, 0, 0), Point(1, 1, 0), Point(2, 2, 0)}), BadInput);
   EXPECT_THROW(polygon_kernel(Polygon{Point(1, 0, 0), Point(1, 1, 0), Point(-1, 0, 1)}), BadInput);
+  // An edge clockwise along Ω: the polygon's left side would be the back.
+  EXPECT_THROW(polygon_kernel(Polygon{Point(1, 0, 0), Point(0, 0, 1), Point(0, 1, 0)}), BadInput);
 }
 
 TEST(PolygonKernel, UnboundedKernelsReachOmega) {
@@ -140,6 +181,70 @@ TEST(PolygonKernel, UnboundedKernelsReachOmega) {
   corners.clear();
   for (const auto& v : polygon_kernel(ell).vertices) corners.push_back(to_double(v));
   EXPECT_TRUE(testing::same_cycle(corners, {Point(1, 0, 0), Point(1, 1, 0), Point(1, 1, 1), Point(1, 0, 1)}));
+}
+
+TEST(PolygonKernel, LeePreparataAgreesWithTheOracleOnEveryPolygonKind) {
+  std::size_t corners = 0, empty = 0;
+  for (Kind k : {Kind::simple_polygon, Kind::star_polygon, Kind::monotone_polygon, Kind::convex_polygon})
+    for (std::uint64_t s = 1; s <= 12; ++s)
+      for (std::size_t n : {3, 4, 7, 20, 60, 250}) {
+        const std::string what = std::string(gen::name(k)) + " n " + std::to_string(n) + " seed " + std::to_string(s);
+        const std::size_t c = expect_as_oracle(polygon_of(k, n, s), what);
+        corners += c, empty += c == 0;
+      }
+  EXPECT_GT(empty, 50u);     // simple and monotone polygons: mostly empty kernels
+  EXPECT_GT(corners, 4000u);  // convex polygons: all their vertices
+}
+
+TEST(PolygonKernel, LeePreparataAgreesWithTheOracleOnUnboundedPolygons) {
+  std::size_t unbounded = 0;
+  for (std::uint64_t s = 1; s <= 30; ++s)
+    for (std::size_t count : {1, 2, 4, 7}) {
+      const Polygon P = to_omega(polygon_of(Kind::star_polygon, 9 + s % 7, s), s, count);
+      const std::string what = "seed " + std::to_string(s) + ", " + std::to_string(count) + " on Omega";
+      expect_as_oracle(P, what);
+      expect_kernel(P, what);
+      unbounded += !polygon_kernel(P).empty() && !polygon_kernel(P).bounded();
+    }
+  EXPECT_GT(unbounded, 20u);
+}
+
+TEST(PolygonKernel, LeePreparataAgreesWithTheOracleOnDegeneratePolygons) {
+  for (std::uint64_t s = 1; s <= 10; ++s) {
+    // Integer polygons with a vertex in the middle of every edge: collinear edges throughout.
+    for (Kind k : {Kind::convex_polygon, Kind::star_polygon}) {
+      Polygon P;
+      const Polygon Q = polygon_of(k, 12, s);
+      for (std::size_t i = 0; i < Q.size(); ++i) {
+        const Point& a = Q[i];
+        const Point& b = Q[(i + 1) % Q.size()];
+        const double ax = 2 * std::round(64 * a.x()), ay = 2 * std::round(64 * a.y());
+        const double bx = 2 * std::round(64 * b.x()), by = 2 * std::round(64 * b.y());
+        P.push_back(Point(1, ax, ay));
+        P.push_back(Point(1, (ax + bx) / 2, (ay + by) / 2));
+      }
+      expect_as_oracle(P, std::string(gen::name(k)) + " with midpoints, seed " + std::to_string(s));
+      expect_kernel(P, "with midpoints");
+    }
+    // Random vertex sequences (not simple): the half-plane intersection all the same.
+    const Polygon scramble = polygon_of(Kind::simple_polygon, 8, s);
+    Polygon shuffled = scramble;
+    std::swap(shuffled[1], shuffled[4]);
+    expect_as_oracle(shuffled, "a self-crossing polygon");
+  }
+  // A Z of two blocks: the kernel is the segment [1, 3] × {0} between two opposite edges on y = 0.
+  const Polygon zed{Point(1, 0, 0), Point(1, 1, 0), Point(1, 1, -1), Point(1, 4, -1),
+                    Point(1, 4, 0), Point(1, 3, 0), Point(1, 3, 1),  Point(1, 0, 1)};
+  const PolygonKernel K = polygon_kernel(zed);
+  ASSERT_EQ(K.vertices.size(), 2u);
+  EXPECT_TRUE(K.vertices[0] == ExactPoint(1, 1, 0) && K.vertices[1] == ExactPoint(1, 3, 0));
+  expect_as_oracle(zed, "Z");
+  expect_kernel(zed, "Z");
+  for (const Polygon& P : {Polygon{Point(1, 2, 0), Point(1, 1, 0), Point(1, 0, 2), Point(1, 0, 1), Point(1, -2, 0),
+                                   Point(1, -1, 0), Point(1, 0, -2), Point(1, 0, -1)},
+                           Polygon{Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(0, -1, 0)},
+                           Polygon{Point(0, 1, 0), Point(0, 0, 1), Point(0, -1, 0), Point(0, 0, -1)}})
+    expect_as_oracle(P, "pinwheel, half-plane, hemisphere");
 }
 
 }  // namespace

@@ -26,11 +26,14 @@
 #include <algorithm>
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "t2/error.hpp"
+#include "t2/lexicographic.hpp"
 #include "t2/line.hpp"
+#include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/polygon.hpp"
 
@@ -85,36 +88,128 @@ inline ExactPoint crossing(const ExactLine& L, const ExactLine& l, const ExactPo
   return (dot > 0) == (la > 0) ? m : antipode(m);
 }
 
-// The region R cut by the closed half-plane left of l (Sutherland–Hodgman on its boundary).
-inline void cut(std::vector<RegionEdge>& R, const ExactLine& l) {
-  const std::size_t m = R.size();
-  std::vector<Sign> s(m);
-  bool out_side = false;
-  for (std::size_t k = 0; k < m; ++k) out_side = (s[k] = sign_of(value(l, R[k].start))) < 0 || out_side;
-  if (!out_side) return;
-  //> kernel-cut
-  std::vector<RegionEdge> out;
-  for (std::size_t k = 0; k < m; ++k) {
-    const RegionEdge& a = R[k];
-    const ExactPoint& b = R[(k + 1) % m].start;
-    const Sign sa = s[k], sb = s[(k + 1) % m];
-    // kept; leaves along l
-    if (sa >= 0) out.push_back({a.start, sa == 0 && sb < 0 ? l : a.line});
-    // leaves: along l
-    if (sa > 0 && sb < 0) out.push_back({crossing(a.line, l, a.start, b), l});
-    // comes back
-    if (sa < 0 && sb > 0) out.push_back({crossing(a.line, l, a.start, b), a.line});
+// The region under construction: its corners as a circular doubly linked list (Lee and
+// Preparata's list, always closed here: an unbounded region is a bounded one of T² reaching Ω).
+// `line` is the edge from the corner to the next one, the region on its left.
+struct KernelCorner {
+  ExactPoint p;
+  ExactLine line;
+  std::size_t prev = 0, next = 0;
+};
+
+struct KernelRegion {
+  std::vector<KernelCorner> c;  // dead corners stay in the vector, unlinked
+  std::size_t any = 0;          // a live corner
+  std::size_t F = 0, L = 0;     // the two tangent corners seen from the current vertex
+
+  std::size_t add(ExactPoint p, ExactLine l) {
+    c.push_back({std::move(p), std::move(l)});
+    return c.size() - 1;
   }
-  // an edge along l of half a turn: add the point 90° along it
-  for (std::size_t k = 0; k < out.size() && out.size() > 1; ++k) {
-    const ExactPoint& x = out[k].start;
-    const ExactPoint& y = out[(k + 1) % out.size()].start;
-    if (out[k].line == l && !(x == y) && ahead(l, x, y) <= 0)
-      out.insert(out.begin() + static_cast<std::ptrdiff_t>(k + 1),
-                 RegionEdge{cross_point(l, x), l});
+  void link(std::size_t a, std::size_t b) { c[a].next = b, c[b].prev = a; }
+};
+
+// Where q lies as seen from v, a point of the line m with R on m's left: R's points are seen
+// within half a turn, from m's own direction (rank 0: q on m, ahead of v) counter-clockwise to
+// the opposite one (rank 2: q on m, behind v); rank 1 is strictly between, where orient orders
+// them. (For v on Ω, "ahead" is along m's orientation, and two points of Ω strictly left of m
+// are seen in one direction: orient, zero for them, is right to tie them.)
+inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& q) {
+  if (sign_of(value(m, q)) != 0) return 1;
+  const ExactLine vq = join(v, q);
+  return sign_of(vq.W() * m.W() + vq.X() * m.X() + vq.Y() * m.Y()) > 0 ? 0 : 2;
+}
+
+// Moves the finger f to the corner of R extreme as seen from v (a point of m, R left of m),
+// clockwise (turn = -1, Lee and Preparata's F: every corner at or counter-clockwise of v → F)
+// or counter-clockwise (turn = +1, their L). R is convex and seen within half a turn, so the
+// directions of its corners rise and fall once along its boundary: a climb to a strictly
+// better neighbour ends at the extreme. The corners v and ¬v have no direction from v: the
+// finger leaves them first (a climb never enters them: orient is zero with them).
+inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std::size_t& f, int turn) {
+  const auto undirected = [&](std::size_t k) { return R.c[k].p == v || R.c[k].p == antipode(v); };
+  for (std::size_t k = 0; undirected(f) && k < R.c.size(); ++k) f = R.c[f].next;
+  const auto better = [&](std::size_t x) {  // x is strictly further in the sense of turn than f
+    if (undirected(x)) return false;
+    const int rf = rank_from(v, m, R.c[f].p), rx = rank_from(v, m, R.c[x].p);
+    const int s = rf != rx ? rx - rf : rf == 1 ? static_cast<int>(orient(v, R.c[f].p, R.c[x].p)) : 0;
+    return s * turn > 0;
+  };
+  for (std::size_t steps = 0; steps <= R.c.size(); ++steps) {
+    if (better(R.c[f].next)) f = R.c[f].next;
+    else if (better(R.c[f].prev)) f = R.c[f].prev;
+    else return;
+  }
+  throw std::logic_error("polygon kernel: a tangent climb went around the region");  // never
+}
+
+// A corner of R strictly right of l, a line through the current vertex v, or none (R.c.size()).
+// With F and L the tangent corners from v: if both are left of or on l, so is every corner
+// (their directions span at most half a turn from F counter-clockwise to L), unless both are on
+// l and R lies on its right, half a turn wide: then a corner next to the run on l is right of it.
+inline std::size_t removed_corner(const KernelRegion& R, const ExactLine& l) {
+  for (std::size_t f : {R.F, R.L}) {
+    if (sign_of(value(l, R.c[f].p)) < 0) return f;
+  }
+  for (std::size_t f : {R.F, R.L})
+    for (bool forward : {true, false}) {
+      std::size_t k = f;
+      for (std::size_t steps = 0; steps < R.c.size(); ++steps) {
+        k = forward ? R.c[k].next : R.c[k].prev;
+        const Sign s = sign_of(value(l, R.c[k].p));
+        if (s < 0) return k;
+        if (s > 0 || k == f) break;
+      }
+    }
+  return R.c.size();
+}
+
+// R cut by the closed half-plane left of l, given a corner s strictly right of l: the run of
+// corners right of l around s is unlinked, and the points where R's boundary leaves and comes
+// back across l are linked in its place. False when every corner is right of l (R is empty).
+inline bool cut(KernelRegion& R, const ExactLine& l, std::size_t s) {
+  //> kernel-cut
+  const auto right = [&](std::size_t k) { return sign_of(value(l, R.c[k].p)) < 0; };
+  std::size_t r = s, t = s;  // the run r … t right of l
+  while (right(R.c[t].next)) {
+    t = R.c[t].next;
+    if (t == s) return false;  // every corner: R is empty
+  }
+  while (right(R.c[r].prev)) r = R.c[r].prev;
+  const std::size_t a = R.c[r].prev, b = R.c[t].next;  // kept: left of l or on it
+  std::size_t x = a, y = b;  // where the boundary leaves across l and comes back
+  if (sign_of(value(l, R.c[a].p)) > 0) {
+    x = R.add(crossing(R.c[a].line, l, R.c[a].p, R.c[r].p), l);
+    R.link(a, x);
+  } else {
+    R.c[a].line = l;
+  }
+  if (sign_of(value(l, R.c[b].p)) > 0) {
+    y = R.add(crossing(R.c[t].line, l, R.c[t].p, R.c[b].p), R.c[t].line);
+    R.link(y, b);
+  }
+  if (x == y) {  // one corner on l is left: R is that point
+    R.link(x, x);
+  } else if (R.c[x].p == R.c[y].p) {  // R was a segment, l crosses it: one corner, not two
+    R.c[x].line = R.c[y].line;
+    R.link(x, b);
+    y = x;
+  } else if (!(R.c[x].p == R.c[y].p) && ahead(l, R.c[x].p, R.c[y].p) <= 0) {
+    const std::size_t m = R.add(cross_point(l, R.c[x].p), l);  // half a turn along l: add
+    R.link(x, m), R.link(m, y);                                // the point 90° along it
+  } else {
+    R.link(x, y);
   }
   //< kernel-cut
-  R = std::move(out);
+  // The tangent corners seen from v, if cut away, become the ends of the new edge along l:
+  // F the farther one ahead along l, L the one behind.
+  for (std::size_t k = r;; k = R.c[k].next) {
+    if (k == R.F) R.F = y;
+    if (k == R.L) R.L = x;
+    if (k == t) break;
+  }
+  R.any = x;
+  return true;
 }
 
 }  // namespace detail
@@ -123,8 +218,8 @@ inline void cut(std::vector<RegionEdge>& R, const ExactLine& l) {
 /// of its edges; a front-only polygon given clockwise is read backwards): the intersection of
 /// the closed half-planes left of its edge lines, within the closed front hemisphere (file
 /// comment). Exact (big-integer homogeneous coordinates). Repeated consecutive vertices are
-/// dropped. Throws `BadInput` for fewer than three distinct vertices, a back-side vertex, or
-/// two consecutive antipodal vertices.
+/// dropped. Throws `BadInput` for fewer than three distinct vertices, a back-side vertex, two
+/// consecutive antipodal vertices, or an edge that runs clockwise along Ω.
 inline PolygonKernel polygon_kernel(std::span<const Point> P) {
   std::vector<Point> V;
   for (const Point& p : P) {
@@ -136,36 +231,62 @@ inline PolygonKernel polygon_kernel(std::span<const Point> P) {
   bool proper = true;
   for (const Point& p : V) proper = proper && p.w() > 0;
   if (proper && orientation(V) < 0) std::reverse(V.begin(), V.end());
-  //> kernel
-  // the closed front hemisphere: Ω in four quarters
-  const ExactPoint X(0, 1, 0), Y(0, 0, 1);
-  std::vector<detail::RegionEdge> R{{X, omega<Integer>()},
-                                    {Y, omega<Integer>()},
-                                    {antipode(X), omega<Integer>()},
-                                    {antipode(Y), omega<Integer>()}};
-  for (std::size_t i = 0; i < V.size() && !R.empty(); ++i) {
+  std::vector<ExactPoint> E;
+  for (std::size_t i = 0; i < V.size(); ++i) {
     const Point& a = V[i];
     const Point& b = V[(i + 1) % V.size()];
-    if (a == antipode(b))
-      throw BadInput("polygon kernel: consecutive vertices are antipodal");
-    detail::cut(R, join(to_exact(a), to_exact(b)));
+    if (a == antipode(b)) throw BadInput("polygon kernel: consecutive vertices are antipodal");
+    if (a.w() == 0 && b.w() == 0 && orient(Point(1, 0, 0), a, b) < 0)
+      throw BadInput("polygon kernel: the edge from " + to_string(a) + " to " + to_string(b) +
+                     " runs clockwise along Omega (the inside would be the back side)");
+    E.push_back(to_exact(V[i]));
+  }
+  //> kernel
+  // the closed front hemisphere: Ω in four quarters
+  detail::KernelRegion R;
+  const ExactPoint X(0, 1, 0), Y(0, 0, 1);
+  for (const ExactPoint& q : {X, Y, antipode(X), antipode(Y)}) R.add(q, omega<Integer>());
+  for (std::size_t k = 0; k < 4; ++k) R.link(k, (k + 1) % 4);
+  for (std::size_t i = 0; i < E.size(); ++i) {
+    const ExactLine l = join(E[i], E[(i + 1) % E.size()]);
+    std::size_t s = R.c.size();  // a corner right of l, if any
+    if (i == 0) {  // the hemisphere has no tangents: look at its four corners
+      for (std::size_t k = 0; k < 4; ++k)
+        if (sign_of(detail::value(l, R.c[k].p)) < 0) s = k;
+    } else {  // R lies left of the edge ending at E[i]: its tangents from E[i]
+      const ExactLine m = join(E[i - 1], E[i]);
+      detail::climb(R, E[i], m, R.F, -1);
+      detail::climb(R, E[i], m, R.L, +1);
+      s = detail::removed_corner(R, l);
+    }
+    if (s < R.c.size() && !detail::cut(R, l, s)) return {};  // empty
   }
   //< kernel
-  // Corners only: drop a vertex between two edges on one line, if the edge stays under π.
-  for (bool changed = true; changed && R.size() > 2;) {
-    changed = false;
-    for (std::size_t k = 0; k < R.size() && R.size() > 2; ++k) {
-      const auto& prev = R[(k + R.size() - 1) % R.size()];
-      const auto& next = R[(k + 1) % R.size()];
-      if (prev.line == R[k].line &&
-          detail::ahead(prev.line, prev.start, next.start) > 0) {
-        R.erase(R.begin() + static_cast<std::ptrdiff_t>(k));
-        changed = true;
-      }
+  // Corners only: drop a corner between two edges on one line, if the edge stays under π (one
+  // pass, from a corner whose edges lie on two lines).
+  std::size_t k0 = R.any;
+  for (std::size_t k = R.any;;) {
+    if (!(R.c[R.c[k].prev].line == R.c[k].line)) {
+      k0 = k;
+      break;
     }
+    if ((k = R.c[k].next) == R.any) break;
   }
+  std::vector<detail::RegionEdge> C;
+  for (std::size_t k = k0;;) {
+    const std::size_t next = R.c[k].next;
+    if (C.empty() || !(C.back().line == R.c[k].line) ||
+        detail::ahead(C.back().line, C.back().start, R.c[next].p) <= 0)
+      C.push_back({R.c[k].p, R.c[k].line});
+    if ((k = next) == k0) break;
+  }
+  // Start at the least corner in the wxy order (lexicographic.hpp): one answer per region.
+  std::size_t first = 0;
+  for (std::size_t k = 1; k < C.size(); ++k)
+    if (compare_lexicographic(C[k].start, C[first].start) < 0) first = k;
+  std::rotate(C.begin(), C.begin() + static_cast<std::ptrdiff_t>(first), C.end());
   PolygonKernel K;
-  for (const auto& e : R) K.vertices.push_back(e.start), K.edges.push_back(e.line);
+  for (const auto& e : C) K.vertices.push_back(e.start), K.edges.push_back(e.line);
   if (K.vertices.size() == 1) K.edges.clear();
   return K;
 }
