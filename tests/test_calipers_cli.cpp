@@ -53,7 +53,8 @@ TEST_F(CalipersCli, KernelOfAPolygonBlock) {
   EXPECT_TRUE(has(r.out, "1 2 0\n") && has(r.out, "1 3 2\n") && has(r.out, "1 2 4\n") && has(r.out, "1 1 2\n")) << r.out;
   EXPECT_TRUE(has(slurp(dir_ / "k.svg"), "<svg"));
   r = t2("kernel -", "polygon\n0 0\n0 1 0\n0 0 1\nend\n");  // the quadrant: unbounded
-  EXPECT_EQ(r.out, "unbounded\n0 1 0\n0 0 1\n1 0 0\n");  // +x, +y on Omega, the origin
+  // +y and +x on Omega, the origin: counter-clockwise from the least corner in the wxy order
+  EXPECT_EQ(r.out, "unbounded\n0 0 1\n1 0 0\n0 1 0\n");
   r = t2("kernel -", "polygon\n0 0\n5 0\n5 3\n4 3\n4 1\n1 1\n1 3\n0 3\nend\n");  // a U
   EXPECT_EQ(r.out, "empty\n");
   r = t2("kernel -", "polygon\n0 0\n1 0\n-1 0 1\nend\n");

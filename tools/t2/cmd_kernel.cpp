@@ -84,15 +84,17 @@ Action setup(CLI::App& app) {
       "the points of the polygon that see every point of it. The polygon's vertices are front\n"
       "points or points of Omega (an unbounded polygon), its interior on the left of its edges\n"
       "(a front-only polygon given clockwise is read backwards). First line: empty, point,\n"
-      "segment, bounded or unbounded; then the kernel's corners counter-clockwise, one per\n"
-      "line as 'w x y' (normalized, rounded once from the exact corner). Corners with w = 0\n"
+      "segment, bounded or unbounded; then the kernel's corners counter-clockwise from the\n"
+      "least in the wxy order (Omega first, then by x, then by y), one per line as 'w x y'\n"
+      "(normalized, rounded once from the exact corner). Corners with w = 0\n"
       "are points of Omega: there the kernel runs off to infinity, and consecutive corners on\n"
       "Omega are joined along Omega.");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   add_drawing_options(app, o->drawing, "the polygon and its kernel");
   app.footer(
       "Exit status: 0 done (an empty kernel too); 2 bad usage or bad input (file:line: what\n"
-      "is wrong), e.g. no polygon block or more than one, or a vertex on the back side.");
+      "is wrong), e.g. no polygon block or more than one, a vertex on the back side, or an\n"
+      "edge clockwise along Omega.");
   return [o] { return polygon_kernel(*o); };
 }
 

@@ -14,14 +14,21 @@
 /// A half-plane of T² is a hemisphere and the intersection of hemispheres is a convex region of
 /// T², so the kernel is computed as one, with exact homogeneous points: start from the closed
 /// front hemisphere (its boundary Ω as four quarter arcs) and cut it by one edge line after the
-/// other, keeping the left side (Sutherland–Hodgman). A cut point is the meet of two lines, so
-/// coordinates never grow beyond degree 4 in the input. Points at infinity are ordinary points
-/// here, which is what makes the unbounded case free: a polygon with vertices on Ω (a wedge, a
-/// half-plane) may have a kernel that reaches Ω, and its vertices there are points of Ω, with
-/// edges along Ω between them. Each cut costs O(k) for a region of k vertices: O(n k) in all.
-/// Lee and Preparata reach O(n) by starting at a reflex vertex and keeping the two tangent
-/// points F and L from the current vertex, so that each cut scans only the part it removes;
-/// the answer is the same region.
+/// other, keeping the left side. A cut point is the meet of two lines, so coordinates never
+/// grow beyond degree 4 in the input. Points at infinity are ordinary points here, which is
+/// what makes the unbounded case free: a polygon with vertices on Ω (a wedge, a half-plane) may
+/// have a kernel that reaches Ω, and its corners there are points of Ω, with edges along Ω.
+///
+/// **Lee and Preparata's O(n).** Cutting by scanning every corner costs O(k) for a region of k
+/// corners, Θ(n²) on a convex polygon. But the edge ending at v_i bounds the region R on its
+/// left, so from v_i the region is seen within half a turn, between two tangent corners F
+/// (clockwise) and L; the next cut line passes through v_i, so R has a corner right of it iff
+/// F or L is (or both lie on it and R is on its right, half a turn wide). A cut then walks
+/// from that corner over the corners it removes only. F and L are kept from one vertex to the
+/// next and climbed to the new tangents. Cost: every corner is created once (at most three
+/// per cut) and removed once, so the cuts cost O(n); Lee and Preparata prove that on a simple
+/// polygon the tangents also move O(n) corners in all. On any other polygon the answer is
+/// still the intersection of the half-planes, exactly; only the time bound is lost.
 
 #include <algorithm>
 #include <cstddef>
@@ -129,10 +136,13 @@ inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& 
 inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std::size_t& f, int turn) {
   const auto undirected = [&](std::size_t k) { return R.c[k].p == v || R.c[k].p == antipode(v); };
   for (std::size_t k = 0; undirected(f) && k < R.c.size(); ++k) f = R.c[f].next;
-  const auto better = [&](std::size_t x) {  // x is strictly further in the sense of turn than f
+  //> kernel-climb
+  // x is strictly further than f in the sense of turn, as seen from v
+  const auto better = [&](std::size_t x) {
     if (undirected(x)) return false;
-    const int rf = rank_from(v, m, R.c[f].p), rx = rank_from(v, m, R.c[x].p);
-    const int s = rf != rx ? rx - rf : rf == 1 ? static_cast<int>(orient(v, R.c[f].p, R.c[x].p)) : 0;
+    const ExactPoint &p = R.c[f].p, &q = R.c[x].p;
+    const int rp = rank_from(v, m, p), rq = rank_from(v, m, q);
+    const int s = rp != rq ? rq - rp : rp == 1 ? static_cast<int>(orient(v, p, q)) : 0;
     return s * turn > 0;
   };
   for (std::size_t steps = 0; steps <= R.c.size(); ++steps) {
@@ -140,6 +150,7 @@ inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std:
     else if (better(R.c[f].prev)) f = R.c[f].prev;
     else return;
   }
+  //< kernel-climb
   throw std::logic_error("polygon kernel: a tangent climb went around the region");  // never
 }
 
@@ -148,9 +159,8 @@ inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std:
 // (their directions span at most half a turn from F counter-clockwise to L), unless both are on
 // l and R lies on its right, half a turn wide: then a corner next to the run on l is right of it.
 inline std::size_t removed_corner(const KernelRegion& R, const ExactLine& l) {
-  for (std::size_t f : {R.F, R.L}) {
+  for (std::size_t f : {R.F, R.L})
     if (sign_of(value(l, R.c[f].p)) < 0) return f;
-  }
   for (std::size_t f : {R.F, R.L})
     for (bool forward : {true, false}) {
       std::size_t k = f;
@@ -194,7 +204,7 @@ inline bool cut(KernelRegion& R, const ExactLine& l, std::size_t s) {
     R.c[x].line = R.c[y].line;
     R.link(x, b);
     y = x;
-  } else if (!(R.c[x].p == R.c[y].p) && ahead(l, R.c[x].p, R.c[y].p) <= 0) {
+  } else if (ahead(l, R.c[x].p, R.c[y].p) <= 0) {
     const std::size_t m = R.add(cross_point(l, R.c[x].p), l);  // half a turn along l: add
     R.link(x, m), R.link(m, y);                                // the point 90° along it
   } else {
@@ -247,19 +257,20 @@ inline PolygonKernel polygon_kernel(std::span<const Point> P) {
   const ExactPoint X(0, 1, 0), Y(0, 0, 1);
   for (const ExactPoint& q : {X, Y, antipode(X), antipode(Y)}) R.add(q, omega<Integer>());
   for (std::size_t k = 0; k < 4; ++k) R.link(k, (k + 1) % 4);
+  ExactLine m = omega<Integer>();  // the last cut's line: R is on its left
   for (std::size_t i = 0; i < E.size(); ++i) {
     const ExactLine l = join(E[i], E[(i + 1) % E.size()]);
     std::size_t s = R.c.size();  // a corner right of l, if any
     if (i == 0) {  // the hemisphere has no tangents: look at its four corners
       for (std::size_t k = 0; k < 4; ++k)
         if (sign_of(detail::value(l, R.c[k].p)) < 0) s = k;
-    } else {  // R lies left of the edge ending at E[i]: its tangents from E[i]
-      const ExactLine m = join(E[i - 1], E[i]);
+    } else {  // E[i] is on m: R is seen from it within half a turn
       detail::climb(R, E[i], m, R.F, -1);
       detail::climb(R, E[i], m, R.L, +1);
       s = detail::removed_corner(R, l);
     }
     if (s < R.c.size() && !detail::cut(R, l, s)) return {};  // empty
+    m = l;
   }
   //< kernel
   // Corners only: drop a corner between two edges on one line, if the edge stays under π (one
