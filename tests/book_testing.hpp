@@ -28,9 +28,6 @@ inline Result run(const std::string& cmd) {
   return {r.status, r.out};
 }
 
-#define T2_NEEDS_PANDOC() \
-  if (!have_program("pandoc")) GTEST_SKIP() << "pandoc is not installed (the Debian package pandoc): skipped"
-
 inline std::string tool() { return T2_TOOL; }
 
 inline void spit(const fs::path& p, const std::string& s) {

@@ -46,6 +46,11 @@ inline bool have_program(const std::string& name) {
   return false;
 }
 
+/// Skips the current test when pandoc is missing (the book tests need it).
+#define T2_NEEDS_PANDOC()                                     \
+  if (!::t2::testing::have_program("pandoc"))                 \
+  GTEST_SKIP() << "pandoc is not installed (the Debian package pandoc): skipped"
+
 /// A shell command line run through t2proc (no shell of our own, no popen): its exit status
 /// (-1 when killed by a signal or not started) and stdout; stderr too with `with_stderr`
 /// ("2>&1", in the order written).
@@ -77,8 +82,10 @@ class CliTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
+  // Writes `text` to the file `name` of the test folder, making its folders.
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << text;
     return p;
   }

@@ -19,25 +19,17 @@ namespace fs = std::filesystem;
 using t2::testing::has;
 using t2::testing::slurp;
 
-#define T2_NEEDS_PANDOC() \
-  if (!t2::testing::have_program("pandoc")) GTEST_SKIP() << "pandoc is not installed: skipped"
-
 class BookAnimations : public t2::testing::CliTest {
  protected:
-  void put(const std::string& rel, const std::string& text) {
-    fs::create_directories((dir_ / rel).parent_path());
-    write(rel, text);
-  }
-
   // One chapter in two parts: a command in a code block (with a comment) linked from part 1, an
   // inline command in part 2 linked from part 1 too.
   void make_repo() {
-    put("chapters/01-alpha/chapter.md",
+    write("chapters/01-alpha/chapter.md",
         "# Alpha\n\n**Watch it.** [Graham's scan](../../animations/graham.html) and "
         "[Delaunay](../../animations/del.html).\n\n"
         "```sh\nt2 animate graham data/pts.t2 -o graham.html   # also: jarvis\n```\n");
-    put("chapters/01-alpha/chapter-2.md", "## More\n\nAnd `t2 animate delaunay data/pts.t2 -o del.html` too.\n");
-    put("data/pts.t2", "0 0\n4 0\n4 3\n0 3\n1 1\n2.5 2\n");
+    write("chapters/01-alpha/chapter-2.md", "## More\n\nAnd `t2 animate delaunay data/pts.t2 -o del.html` too.\n");
+    write("data/pts.t2", "0 0\n4 0\n4 3\n0 3\n1 1\n2.5 2\n");
     fs::create_directories(dir_ / "book");
     for (const char* f : {"template.html", "book.lua", "style.css", "parts.txt"})
       fs::copy_file(fs::path(T2_SOURCE_DIR) / "book" / f, dir_ / "book" / f, fs::copy_options::overwrite_existing);
@@ -78,7 +70,7 @@ TEST_F(BookAnimations, BuildWritesThePagesTheChaptersLinkTo) {
 TEST_F(BookAnimations, CheckRefusesLinksNoCommandWritesAndCommandsThatCannotRun) {
   T2_NEEDS_PANDOC();
   make_repo();
-  put("chapters/01-alpha/chapter-2.md",
+  write("chapters/01-alpha/chapter-2.md",
       "## More\n\nA [missing page](../../animations/nope.html).\n\n"
       "```sh\nt2 animate quicksort data/pts.t2 -o q.html\nt2 animate graham data/none.t2 -o n.html\n"
       "t2 animate jarvis data/pts.t2 -o graham.html\nt2 animate graham data/pts.t2\n```\n");

@@ -15,41 +15,33 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#define T2_NEEDS_PANDOC() \
-  if (!t2::testing::have_program("pandoc")) GTEST_SKIP() << "pandoc is not installed: skipped"
-
 class BookParts : public t2::testing::CliTest {
  protected:
-  void put(const std::string& rel, const std::string& text) {
-    fs::create_directories((dir_ / rel).parent_path());
-    write(rel, text);
-  }
-
   // Chapter 01 in three parts (a listing in part 2, a figure in part 3, a quoted output block
   // in part 3 printed by its program), chapter 02 in one; exercise sheets 01, 01b, 01c of
   // chapter 01, 02 of chapter 02, and folders that are no sheet of a chapter.
   void make_repo() {
-    put("chapters/01-alpha/main.cpp", "int main() {\n  //> greet\n  int n = 3;\n  //< greet\n}\n");
-    put("chapters/01-alpha/chapter.md",
+    write("chapters/01-alpha/main.cpp", "int main() {\n  //> greet\n  int n = 3;\n  //< greet\n}\n");
+    write("chapters/01-alpha/chapter.md",
         "# Alpha\n\n## One\n\nFirst part. See [two](chapter-2.md#two).\n\n"
         "*Continued in [chapter-2.md](chapter-2.md).*\n");
-    put("chapters/01-alpha/chapter-2.md",
+    write("chapters/01-alpha/chapter-2.md",
         "## Two\n\n<!-- listing: chapters/01-alpha/main.cpp#greet -->\n```cpp\nint n = 3;\n```\n\n"
         "Continued in [chapter-3.md](chapter-3.md).\n");
-    put("chapters/01-alpha/chapter-3.md",
+    write("chapters/01-alpha/chapter-3.md",
         "## Three\n\n![A dot.](../../figures/01-alpha/dot.svg)\n\nIt prints:\n\n```text\nthree\n```\n\n"
         "Back to [part one](chapter.md#one) and [beta](../02-beta/chapter.md).\n");
-    put("chapters/02-beta/chapter.md", "# Beta\n\nSee [alpha, part three](../01-alpha/chapter-3.md#three).\n");
-    put("figures/01-alpha/dot.svg",
+    write("chapters/02-beta/chapter.md", "# Beta\n\nSee [alpha, part three](../01-alpha/chapter-3.md#three).\n");
+    write("figures/01-alpha/dot.svg",
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"8\" height=\"8\"><circle cx=\"4\" cy=\"4\" r=\"3\"/></svg>\n");
     // The chapter's "program": a script that prints the quoted line.
-    put("bin/chapter_01", "#!/bin/sh\necho three\n");
+    write("bin/chapter_01", "#!/bin/sh\necho three\n");
     fs::permissions(dir_ / "bin/chapter_01", fs::perms::owner_all);
     for (const char* ex : {"01-alpha", "01b-more", "01c-last", "02-beta"})
-      put(std::string("exercises/") + ex + "/README.md", std::string("# Sheet ") + ex + "\n\nDo it.\n");
-    put("exercises/01d-no-readme/notes.txt", "not a sheet: no README.md\n");
-    put("exercises/_template/README.md", "# Template\n");
-    put("exercises/010-x/README.md", "# Not chapter 01\n");
+      write(std::string("exercises/") + ex + "/README.md", std::string("# Sheet ") + ex + "\n\nDo it.\n");
+    write("exercises/01d-no-readme/notes.txt", "not a sheet: no README.md\n");
+    write("exercises/_template/README.md", "# Template\n");
+    write("exercises/010-x/README.md", "# Not chapter 01\n");
     fs::create_directories(dir_ / "book");
     for (const char* f : {"template.html", "book.lua", "style.css", "parts.txt"})
       fs::copy_file(fs::path(T2_SOURCE_DIR) / "book" / f, dir_ / "book" / f, fs::copy_options::overwrite_existing);
@@ -68,9 +60,9 @@ TEST_F(BookParts, EveryPartIsCheckedAndSynced) {
 
   // Drift in part 2, a missing figure in part 3, an unprinted line quoted in part 3: each
   // reported at its own file and line.
-  put("chapters/01-alpha/main.cpp", "int main() {\n  //> greet\n  int n = 4;\n  //< greet\n}\n");
+  write("chapters/01-alpha/main.cpp", "int main() {\n  //> greet\n  int n = 4;\n  //< greet\n}\n");
   fs::remove(dir_ / "figures/01-alpha/dot.svg");
-  put("bin/chapter_01", "#!/bin/sh\necho four\n");
+  write("bin/chapter_01", "#!/bin/sh\necho four\n");
   const auto bad = check();
   const std::string said = bad.out + bad.err;
   EXPECT_EQ(bad.status, 1) << said;
@@ -104,7 +96,7 @@ TEST_F(BookParts, PartsAreNumberedWithoutGapsAndOnlyTheFirstHasTheTitle) {
             std::string::npos)
       << r.err;
   fs::rename(dir_ / "chapters/01-alpha/chapter-4.md", dir_ / "chapters/01-alpha/chapter-3.md");
-  put("chapters/01-alpha/chapter-2.md", "# Two\n\nA second title.\n");
+  write("chapters/01-alpha/chapter-2.md", "# Two\n\nA second title.\n");
   r = check();
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("chapters/01-alpha/chapter-2.md:1: only chapter.md has the chapter's '# Title'"),
