@@ -96,7 +96,10 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
       ASSERT_EQ(h.status, 0);
       EXPECT_TRUE(same_cycle(numbers(last_step_field(html, "chain")), numbers(h.out)))
           << what << ": " << last_step_field(html, "chain") << " vs " << h.out;
-      EXPECT_TRUE(has(html, "\"depth\":1")) << what << ": no debugging step";
+      // The merge of front points alone merges nothing: its chain is the whole algorithm, shown
+      // at the lecture level (hull_recorder.hpp), and there is no deeper step.
+      const bool one_half = algo == "merge-hull" && std::string(file) == "u.t2";
+      EXPECT_EQ(has(html, "\"depth\":1"), !one_half) << what << ": debugging steps";
     }
 }
 

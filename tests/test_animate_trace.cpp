@@ -93,14 +93,19 @@ TEST(HullRecorder, JarvisFollowsTheCandidateToEveryVertex) {
   }
 }
 
+// Points on both sides of T² (a share 0.4 behind), 12 + seed of them.
+std::vector<Point> both_sides(std::uint64_t seed) {
+  gen::Options o;
+  o.n = 12 + seed;
+  o.seed = seed;
+  o.back = 0.4;
+  return gen::points(gen::Kind::both_sides, o);
+}
+
 TEST(HullRecorder, MergeRecordsTheHullAtItsLastBridge) {
   std::size_t bridged = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    gen::Options o;
-    o.n = 12 + seed;
-    o.seed = seed;
-    o.back = 0.4;
-    const auto P = gen::points(gen::Kind::both_sides, o);
+    const auto P = both_sides(seed);
     Recording rec;
     HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
     const auto h = merge_hull(std::span<const Point>(P), r);
@@ -115,6 +120,55 @@ TEST(HullRecorder, MergeRecordsTheHullAtItsLastBridge) {
     EXPECT_EQ(std::set<std::size_t>(h.begin(), h.end()).size(), convex_hull(P, HullAlgorithm::graham).size());
   }
   EXPECT_GT(bridged, 6u);  // the inputs do exercise the merge
+}
+
+// The lecture level of the merge: the positive half's hull, finished, just before the first
+// bridge (checked against Graham's hull of those points alone), then the bridges; when every
+// point is in the positive half, the chain's pushes and pops (nothing is merged).
+TEST(HullRecorder, MergeShowsThePositiveHalfsHullThenTheBridges) {
+  std::size_t halves = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const auto P = both_sides(seed);
+    Recording rec;
+    HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
+    merge_hull(std::span<const Point>(P), r);
+    const auto& S = rec.steps();
+    const auto half = std::find_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "half"; });
+    const auto bridge = std::find_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "bridge"; });
+    ASSERT_EQ(half == S.end(), bridge == S.end());
+    if (half == S.end()) continue;
+    ++halves;
+    EXPECT_EQ(half + 1, bridge);
+    EXPECT_EQ(std::count_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "half"; }), 1);
+    EXPECT_EQ(half->depth, Depth::lecture);
+    EXPECT_TRUE(half->closed);
+    std::vector<Point> front;  // both-sides: the positive half is the front side
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P[i].w() > 0) front.push_back(P[i]), index.push_back(i);
+    std::vector<std::size_t> expected;
+    for (std::size_t k : convex_hull(front, HullAlgorithm::graham)) expected.push_back(index[k]);
+    ASSERT_FALSE(half->chain.empty());
+    const auto at = std::find(expected.begin(), expected.end(), half->chain.front());
+    ASSERT_NE(at, expected.end()) << half->text;
+    std::rotate(expected.begin(), at, expected.end());
+    EXPECT_EQ(half->chain, expected) << half->text;
+    for (const auto& s : S) {
+      if (s.kind == "push" || s.kind == "pop") {
+        EXPECT_EQ(s.depth, Depth::debugging);
+      }
+    }
+  }
+  EXPECT_GT(halves, 6u);
+  // Front points only: the chain is the whole algorithm, shown at the lecture level.
+  const auto P = make(gen::Kind::uniform, 20, 3);
+  Recording rec;
+  HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
+  merge_hull(std::span<const Point>(P), r);
+  const auto lecture = rec.at(Depth::lecture);
+  EXPECT_EQ(lecture.size(), rec.size());
+  EXPECT_TRUE(std::any_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "pop"; }));
+  EXPECT_TRUE(std::none_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "half"; }));
 }
 
 TEST(Recording, LevelsKeepTheOrderAndTheDepth) {

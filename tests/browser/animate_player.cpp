@@ -6,8 +6,11 @@
 // Label "browser"; skips when chromium is not installed.
 #include <algorithm>
 #include <regex>
+#include <set>
+#include <span>
 
 #include "cli_testing.hpp"
+#include "oracle.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 #include "t2/triangulation/delaunay.hpp"
@@ -154,6 +157,67 @@ TEST_F(PlayerInChromium, SweepEndsWithTheSweepsTriangulation) {
   const Shown join = load("step=2&level=debugging&click=next,prev");
   EXPECT_EQ(join.pos, 2);
   EXPECT_TRUE(has(join.explanation, "the next point in (x, y) order")) << join.explanation;
+}
+
+// Jarvis's march: the last step is the library's Jarvis hull; the debugging level steps back
+// through the candidates one at a time.
+TEST_F(PlayerInChromium, JarvisEndsWithTheMarchsHull) {
+  if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
+  T2_NEEDS_CHROMIUM();
+  const auto P = make("jarvis", gen::Kind::disk, 10);
+  const Shown last = load("step=last");
+  EXPECT_EQ(numbers(last.chain), convex_hull(P, HullAlgorithm::jarvis)) << last.explanation;
+  const Shown fourth = load("step=4&level=debugging");
+  const Shown third = load("step=4&level=debugging&click=prev");
+  EXPECT_EQ(third.pos + 1, fourth.pos);
+  EXPECT_NE(third.explanation, fourth.explanation);
+  EXPECT_NE(third.view, fourth.view);
+}
+
+// The merge on both sides of T²: the lecture level's second step is the positive half's hull;
+// the last is merge_hull's answer.
+TEST_F(PlayerInChromium, MergeHullShowsTheHalfThenEndsWithTheMerge) {
+  if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
+  T2_NEEDS_CHROMIUM();
+  const auto P = make("merge-hull", gen::Kind::both_sides, 12);
+  const Shown half = load("click=next");
+  EXPECT_EQ(half.pos, 1);
+  EXPECT_TRUE(has(half.explanation, "The hull of the positive half")) << half.explanation;
+  const Shown last = load("step=last");
+  EXPECT_EQ(numbers(last.chain), merge_hull(std::span<const Point>(P))) << last.explanation;
+  const Shown before = load("step=last&click=prev");
+  EXPECT_EQ(before.pos + 1, last.pos);
+  EXPECT_NE(before.view, last.view);
+}
+
+// The incremental triangulation: the last step is a triangulation of the points, checked
+// exactly: every triangle counter-clockwise, 2n - h - 2 of them, every point a vertex, and
+// their areas adding up to the hull's.
+TEST_F(PlayerInChromium, TriangulateEndsWithATriangulationOfThePoints) {
+  if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
+  T2_NEEDS_CHROMIUM();
+  const auto P = make("triangulate", gen::Kind::uniform, 12);
+  const Shown last = load("step=last");
+  const auto v = numbers(last.triangles);
+  const auto hull = convex_hull(P);
+  ASSERT_EQ(v.size(), 3 * (2 * P.size() - hull.size() - 2)) << last.explanation;
+  auto area2 = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const Pos A = pos(P[a]), B = pos(P[b]), C = pos(P[c]);
+    return Rational((B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]));
+  };
+  Rational sum = 0, whole = 0;
+  for (std::size_t k = 0; k < v.size(); k += 3) {
+    const Rational a = area2(v[k], v[k + 1], v[k + 2]);
+    EXPECT_GT(a, 0) << "triangle " << v[k] << " " << v[k + 1] << " " << v[k + 2];
+    sum += a;
+  }
+  for (std::size_t k = 1; k + 1 < hull.size(); ++k) whole += area2(hull[0], hull[k], hull[k + 1]);
+  EXPECT_EQ(sum, whole);
+  EXPECT_EQ(std::set<std::size_t>(v.begin(), v.end()).size(), P.size());
+  const Shown third = load("step=3&click=prev");
+  const Shown fourth = load("step=3");
+  EXPECT_EQ(third.pos + 1, fourth.pos);
+  EXPECT_NE(third.triangles, fourth.triangles);
 }
 
 }  // namespace

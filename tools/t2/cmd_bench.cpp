@@ -15,6 +15,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_plot.hpp"
@@ -160,8 +161,10 @@ int bench(const Options& o) {
   fmt::print("# size: hull vertices, layers or finite triangles; peak: the worker's peak RSS (input included); run B/pt: "
              "peak above the input, per point; ratio: {} CPU time / this row's\n",
              o.algo);
-  fmt::print("{:<10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7}  {}\n", "impl", "n", "size", "wall_s", "cpu_s",
-             "peak_MiB", "run_B/pt", "ratio", "agrees");
+  std::size_t name_width = 10;  // the first column fits the longest name ("layers-graham")
+  for (const Impl* i : run) name_width = std::max(name_width, std::string_view(i->name).size());
+  fmt::print("{:<{}} {:>10} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7}  {}\n", "impl", name_width, "n", "size", "wall_s",
+             "cpu_s", "peak_MiB", "run_B/pt", "ratio", "agrees");
   std::vector<std::string> disagreements, notes;
   std::string csv = "impl,n,size,wall_s,cpu_s,peak_rss_kb,input_rss_kb\n";
   for (const Row& r : rows) {
@@ -172,7 +175,7 @@ int bench(const Options& o) {
                                            r.impl->name, r.size);
       (r.impl->exact ? disagreements : notes).push_back(what);
     }
-    fmt::print("{:<10} {:>10} {:>10} {:>10.4g} {:>10.4g} {:>9.1f} {:>8.1f} {:>7.3f}  {}\n", r.impl->name, r.n, r.size,
+    fmt::print("{:<{}} {:>10} {:>10} {:>10.4g} {:>10.4g} {:>9.1f} {:>8.1f} {:>7.3f}  {}\n", r.impl->name, name_width, r.n, r.size,
                r.wall, r.cpu, r.peak_kb / 1024, (r.peak_kb - r.input_kb) * 1024 / double(r.n),
                r.cpu > 0 ? ref.cpu / r.cpu : 0.0, agrees);
     csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.0f},{:.0f}\n", r.impl->name, r.n, r.size, r.wall, r.cpu, r.peak_kb,

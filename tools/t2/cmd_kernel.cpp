@@ -23,23 +23,23 @@ struct Options {
   AnswerDrawing drawing;
 };
 
-// The kernel as a scene: a green polygon, segment or point. Two consecutive corners on Ω that
-// are antipodes have no segment of T² between them: that edge (along Ω) is left out, the
-// others are drawn as segments.
+// The kernel as a scene: a red polygon, segment or point (the input polygon, drawn under it,
+// is green by default). Two consecutive corners on Ω that are antipodes have no segment of T²
+// between them: that edge (along Ω) is left out, the others are drawn as segments.
 t2::Scene answer(const std::vector<t2::Point>& corners) {
   t2::Scene s;
-  const t2::SceneStyle green = style_of("color=green width=2 layer=0");
+  const t2::SceneStyle red = style_of("color=red width=2 layer=0");
   std::vector<t2::ScenePoint> c;
   for (const auto& p : corners) c.push_back(scene_point(p));
   const std::size_t n = c.size();
   bool antipodal = false;
   for (std::size_t i = 0; n >= 3 && i < n; ++i) antipodal |= c[i].point == t2::antipode(c[(i + 1) % n].point);
-  if (n >= 3 && !antipodal) s.polygons.push_back(t2::ScenePolygon{c, 0, style_of("color=green width=2 fill=green layer=0")});
+  if (n >= 3 && !antipodal) s.polygons.push_back(t2::ScenePolygon{c, 0, style_of("color=red width=2 fill=red layer=0")});
   for (std::size_t i = 0; antipodal && i < n; ++i)
-    if (!(c[i].point == t2::antipode(c[(i + 1) % n].point))) s.segments.push_back(t2::SceneSegment{c[i], c[(i + 1) % n], 0, green});
-  if (n == 2) s.segments.push_back(t2::SceneSegment{c[0], c[1], 0, green});
+    if (!(c[i].point == t2::antipode(c[(i + 1) % n].point))) s.segments.push_back(t2::SceneSegment{c[i], c[(i + 1) % n], 0, red});
+  if (n == 2) s.segments.push_back(t2::SceneSegment{c[0], c[1], 0, red});
   if (n == 1) {
-    t2::SceneStyle st = style_of("color=green size=4.5 layer=3");
+    t2::SceneStyle st = style_of("color=red size=4.5 layer=3");
     st.label = "kernel";
     s.points.push_back(scene_point(c[0].point, st));
   }

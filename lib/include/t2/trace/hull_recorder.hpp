@@ -13,8 +13,13 @@
 /// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step. In the
 /// merge, the monotone chains of the two halves are a sub-algorithm, one level deeper (as
 /// GeoLab's animation depth grows when an algorithm calls another): their pushes and pops are
-/// debugging steps, and the lecture level shows the bridges.
+/// debugging steps, and the lecture level shows the positive half's finished hull (a step of
+/// its own, "half", recorded before the first bridge) and the bridges. When every point lies in
+/// the positive half there is nothing to merge and the chain is the whole algorithm: its
+/// pushes and pops are then lecture steps. (The merge traces the positive half only: when every
+/// point lies in the negative half, only the answer is recorded.)
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -44,7 +49,10 @@ class HullRecorder {
   /// @param chart the chart the algorithm runs in (used to follow Jarvis's candidate)
   /// @param out where the steps go
   HullRecorder(HullAlgo algo, std::span<const Point> P, const Chart& chart, Recording& out)
-      : algo_(algo), P_(P), chart_(chart), out_(out) {}
+      : algo_(algo), P_(P), chart_(chart), out_(out),
+        one_half_(std::all_of(P.begin(), P.end(), [](const Point& p) {  // merge.hpp's split, lexicographic
+          return (p.w() != 0 ? sign_of(p.w()) : p.x() != 0 ? sign_of(p.x()) : sign_of(p.y())) > 0;
+        })) {}
 
   /// The trace call of hull/kernel.hpp.
   void operator()(HullStep step, std::size_t i, std::span<const std::size_t> chain) {
@@ -53,10 +61,15 @@ class HullRecorder {
       case HullAlgo::jarvis: jarvis(step, i, c); break;
       case HullAlgo::graham: graham(step, i, c, "stack", "", Depth::lecture); break;
       case HullAlgo::merge:
-        if (step == HullStep::bridge)
+        if (step == HullStep::bridge) {
+          if (!bridged_) half();
+          bridged_ = true;
           bridge(i, c);
-        else
-          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ", Depth::debugging);
+        } else {
+          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ",
+                 one_half_ ? Depth::lecture : Depth::debugging);
+          half_ = out_.back().chain;
+        }
         break;
     }
   }
@@ -148,6 +161,19 @@ class HullRecorder {
     add("consider", Depth::debugging, text, "hull so far", c, {i, cand_}, {{u_, cand_}});
   }
 
+  // The merge: the positive half's hull is done (the chain closes back at its first point).
+  void half() {
+    std::vector<std::size_t> h = half_;
+    if (h.size() > 1 && h.back() == h.front()) h.pop_back();
+    std::string list;
+    for (std::size_t i : h) list += (list.empty() ? "" : ", ") + p(i);
+    add("half", Depth::lecture,
+        "The hull of the positive half (w > 0, then the positive part of Ω) is done: " +
+            (list.empty() ? std::string("no point") : list) +
+            ". The negative half's hull, the monotone chain of its antipodes, now joins it one vertex at a time.",
+        "hull so far", h, {}, {}, true);
+  }
+
   void bridge(std::size_t q, std::vector<std::size_t> kept) {
     const std::size_t a = kept.back(), b = kept.front();
     kept.push_back(q);
@@ -166,6 +192,9 @@ class HullRecorder {
   std::size_t u_ = none;        // Jarvis: the last vertex
   std::size_t cand_ = none;     // Jarvis: the current candidate for the next vertex
   bool consistent_ = true;
+  bool one_half_;                   // merge: every point in the positive half (nothing to merge)
+  bool bridged_ = false;            // merge: a bridge was recorded
+  std::vector<std::size_t> half_;   // merge: the positive half's chain so far
 };
 
 }  // namespace t2::trace
