@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <set>
 
 #include "t2/gen/generate.hpp"
@@ -27,6 +28,20 @@ TEST(Gen, NamesRoundTrip) {
   EXPECT_EQ(gen::all_kinds().size(), 20u);
   for (Kind k : gen::all_kinds()) EXPECT_EQ(gen::kind_from_name(gen::name(k)), k);
   EXPECT_THROW(gen::kind_from_name("gaussian"), BadInput);
+}
+
+// simple-polygon --untangle: its own reproducible bytes, said in the file's command line, and
+// another polygon than space partitioning's on the same points' stream.
+TEST(Gen, UntangleIsReproducibleAndNamed) {
+  gen::Options o = opts(30);
+  o.untangle = true;
+  const std::string text = gen::to_text(Kind::simple_polygon, o);
+  EXPECT_EQ(text, gen::to_text(Kind::simple_polygon, o));
+  EXPECT_EQ(text.rfind("# t2 gen simple-polygon --n 30 --seed 7 --untangle\n", 0), 0u) << text;
+  EXPECT_NE(text.substr(text.find('\n')), gen::to_text(Kind::simple_polygon, opts(30)).substr(text.find('\n')));
+  gen::Options p = o;
+  p.seed = 8;
+  EXPECT_NE(text, gen::to_text(Kind::simple_polygon, p));
 }
 
 TEST(Gen, SameOptionsSameBytesOtherSeedOtherBytes) {
@@ -158,8 +173,12 @@ TEST(Gen, PolygonsHaveTheirShape) {
     EXPECT_GT(signed_area(P), 0) << gen::name(k);
     for (std::size_t i = 0; i < n; ++i) {
       const Point &a = P[i], &b = P[(i + 1) % n], &c = P[(i + 2) % n];
-      if (k == Kind::convex_polygon) EXPECT_EQ(orient(a, b, c), POSITIVE);
-      if (k == Kind::star_polygon) EXPECT_EQ(orient(o, a, b), POSITIVE);
+      if (k == Kind::convex_polygon) {
+        EXPECT_EQ(orient(a, b, c), POSITIVE);
+      }
+      if (k == Kind::star_polygon) {
+        EXPECT_EQ(orient(o, a, b), POSITIVE);
+      }
     }
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 2; j < n; ++j) {
@@ -192,17 +211,22 @@ bool meet_oracle(const testing::Pos& a, const testing::Pos& b, const testing::Po
 }
 
 // Every polygon kind makes simple, counter-clockwise polygons, small n included (star-polygon
-// once closed non-simple polygons for n = 4, seed 9: the origin outside its vertices).
+// once closed non-simple polygons for n = 4, seed 9: the origin outside its vertices); so does
+// simple-polygon --untangle (2-opt).
 TEST(Gen, EveryPolygonIsSimple) {
-  for (Kind k : {Kind::convex_polygon, Kind::star_polygon, Kind::monotone_polygon, Kind::simple_polygon})
+  for (int kind = 0; kind < 5; ++kind)
     for (std::size_t n : {3, 4, 5, 6, 7, 8, 10, 13, 20, 40})
       for (std::uint64_t seed = 1; seed <= (n < 40 ? 30u : 5u); ++seed) {
-        const Polygon P = gen::polygon(k, opts(n, seed));
+        const Kind k = std::array{Kind::convex_polygon, Kind::star_polygon, Kind::monotone_polygon,
+                                  Kind::simple_polygon, Kind::simple_polygon}[static_cast<std::size_t>(kind)];
+        gen::Options o = opts(n, seed);
+        o.untangle = kind == 4;
+        const Polygon P = gen::polygon(k, o);
         const std::size_t m = P.size();
-        const std::string what = fmt::format("{} --n {} --seed {}", gen::name(k), n, seed);
+        const std::string what = fmt::format("{} --n {} --seed {}{}", gen::name(k), n, seed, o.untangle ? " --untangle" : "");
         ASSERT_GE(m, 3u) << what;
-        if (k != Kind::simple_polygon) {
-          EXPECT_EQ(m, n) << what;  // simple-polygon drops repeats
+        if (k != Kind::simple_polygon || o.untangle) {
+          EXPECT_EQ(m, n) << what;  // simple-polygon by space partitioning drops repeats
         }
         std::vector<testing::Pos> V;
         for (const Point& p : P) V.push_back(testing::pos(p));

@@ -57,6 +57,8 @@ Action setup(CLI::App& app) {
       ->type_name("K")
       ->check(CLI::PositiveNumber);
   app.add_flag("--cartesian", o->gen.cartesian, "circle: rounded Cartesian points instead of exact homogeneous ones");
+  app.add_flag("--untangle", o->gen.untangle,
+               "simple-polygon: 2-opt untangling of the points in random order instead of space partitioning");
   app.add_option("-o", o->output, "write FILE (atomically) instead of standard output")->type_name("FILE");
   app.footer(kinds() + "\nExit status: 0 done; 2 bad usage or impossible options.");
   return [o] { return generate(*o); };

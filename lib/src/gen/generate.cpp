@@ -40,7 +40,7 @@ const Info kInfo[] = {
     {Kind::infinity, "infinity", "half front points, half at infinity in directions with dx > 0"},
     {Kind::cube, "cube", "3-D: uniform in the cube [-1,1)^3 (lines x y z)"},
     {Kind::sphere, "sphere", "3-D: on the unit sphere, rounded (lines x y z)"},
-    {Kind::simple_polygon, "simple-polygon", "a random simple polygon (space partitioning)"},
+    {Kind::simple_polygon, "simple-polygon", "a random simple polygon (space partitioning; --untangle: 2-opt)"},
     {Kind::star_polygon, "star-polygon", "a polygon star-shaped around the origin"},
     {Kind::convex_polygon, "convex-polygon", "a convex polygon, vertices exactly on the unit circle"},
     {Kind::monotone_polygon, "monotone-polygon", "an x-monotone polygon"},

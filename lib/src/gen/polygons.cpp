@@ -8,6 +8,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/gen/random.hpp"
 #include "t2/orient.hpp"
+#include "t2/polygon.hpp"
 
 namespace t2::gen {
 
@@ -137,6 +138,46 @@ Polygon simple(const Options& o) {
   return v;
 }
 
+// 2-opt untangling (van Leeuwen and Schoone 1981; Zhu, Sundaram, Snoeyink and Mitchell 1996):
+// the points in the order they were drawn make a random, tangled polygon; while two edges
+// a → b and c → d that are not neighbours cross, reverse the chain b ... c between them, so that
+// the edges become a → c and b → d. The crossing is proper (decided by exact orientations), so
+// by the triangle inequality the perimeter strictly shrinks with each reversal: no polygon
+// comes back, and the untangling ends, with a simple polygon. A contact that is no proper
+// crossing (three collinear points: as good as never for random doubles) draws the points
+// again from the same stream, as star-polygon does. O(n²) per pass over the edge pairs, and
+// many passes: meant for the small polygons of lectures and tests (n up to a few thousand).
+Polygon untangled(const Options& o) {
+  Random r(o.seed);
+  for (;;) {
+    Polygon v;
+    for (std::size_t i = 0; i < o.n; ++i) {
+      const double x = r.symmetric();
+      v.push_back(Point::cartesian(x, r.symmetric()));
+    }
+    const std::size_t n = v.size();
+    bool changed = true, degenerate = false;
+    while (changed && !degenerate) {
+      changed = false;
+      for (std::size_t i = 0; i + 2 < n && !degenerate; ++i)
+        for (std::size_t j = i + 2; j < n && !degenerate; ++j) {
+          if (i == 0 && j == n - 1) continue;  // neighbours through the closing edge
+          const Point &a = v[i], &b = v[i + 1], &c = v[j], &d = v[(j + 1) % n];
+          const Sign s1 = orient(a, b, c), s2 = orient(a, b, d), s3 = orient(c, d, a), s4 = orient(c, d, b);
+          if (s1 == ZERO || s2 == ZERO || s3 == ZERO || s4 == ZERO) {
+            degenerate = segments_intersect(a, b, c, d);
+          } else if (s1 != s2 && s3 != s4) {
+            std::reverse(v.begin() + static_cast<std::ptrdiff_t>(i + 1), v.begin() + static_cast<std::ptrdiff_t>(j + 1));
+            changed = true;
+          }
+        }
+    }
+    if (degenerate || !is_simple(v)) continue;  // also repeated points, or a flat triangle
+    if (orientation(v) < 0) std::reverse(v.begin(), v.end());
+    return v;
+  }
+}
+
 }  // namespace
 
 Polygon polygon(Kind k, const Options& o) {
@@ -145,7 +186,7 @@ Polygon polygon(Kind k, const Options& o) {
     case Kind::convex_polygon: return convex(o);
     case Kind::star_polygon: return star(o);
     case Kind::monotone_polygon: return monotone(o);
-    case Kind::simple_polygon: return simple(o);
+    case Kind::simple_polygon: return o.untangle ? untangled(o) : simple(o);
     default: throw BadInput(fmt::format("{} is not a polygon kind", name(k)));
   }
 }

@@ -19,6 +19,7 @@ std::string command(Kind k, const Options& o) {
   if (k == Kind::segments) c += fmt::format(" --crossings {}", o.crossings);
   if (k == Kind::normal) c += fmt::format(" --clusters {}", o.clusters);
   if (k == Kind::circle && o.cartesian) c += " --cartesian";
+  if (k == Kind::simple_polygon && o.untangle) c += " --untangle";
   return c + "\n# " + std::string(description(k)) + "\n";
 }
 

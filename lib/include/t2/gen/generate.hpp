@@ -37,7 +37,7 @@ enum class Kind {
   infinity,          ///< half front points, half points at infinity in directions (dx > 0, dy)
   cube,              ///< 3-D: uniform in the cube [-1, 1)³ (lines `x y z`)
   sphere,            ///< 3-D: on the unit sphere, rounded (lines `x y z`)
-  simple_polygon,    ///< a random simple polygon (space partitioning)
+  simple_polygon,    ///< a random simple polygon (space partitioning, or 2-opt untangling: `untangle`)
   star_polygon,      ///< a polygon star-shaped around the origin
   convex_polygon,    ///< a convex polygon with vertices exactly on the unit circle
   monotone_polygon,  ///< an x-monotone polygon
@@ -52,6 +52,7 @@ struct Options {
   std::size_t crossings = 0;   ///< segments: the number of crossings
   std::size_t clusters = 4;    ///< normal: the number of clusters
   bool cartesian = false;      ///< circle: rounded (a/c, b/c) instead of exact [c, a, b]
+  bool untangle = false;       ///< simple-polygon: 2-opt untangling of a random polygon, not space partitioning
 };
 
 /// Every kind, in the order of the enumeration.
