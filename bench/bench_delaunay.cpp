@@ -6,6 +6,7 @@
 //   bench_delaunay --benchmark_filter='Rss/cgal/uniform'  (run each Rss case in its own process:
 //                                                       maxrss never goes down)
 //   bench_delaunay --benchmark_filter='Raw'            the same code on raw doubles (inexact)
+//   bench_delaunay --benchmark_filter='Trace'          the trace hooks off against counting
 //   bench_delaunay --benchmark_filter='Sides'          T² input (both-sides, antipodal) against
 //                                                       uniform front input of the same size
 //
@@ -146,6 +147,35 @@ void Raw(benchmark::State& state) {
   state.counters["exact/raw"] = exact_time / raw_time;
 }
 BENCHMARK(Raw)->Iterations(2)->Unit(benchmark::kSecond);
+
+// The trace hooks of delaunay_with (the kernel's `inserted` and `flipped`, which t2 animate's
+// recorder fills): DelaunayKernel's empty hooks against a kernel that counts every call, on the
+// same points in one run. Equal times say that the hooks cost nothing when off.
+struct CountingKernel : t2::DelaunayKernel {
+  long* calls;
+  void inserted(const t2::Triangulation&, t2::Triangulation::Index) { ++*calls; }
+  void flipped(const t2::Triangulation&, t2::Triangulation::Index, t2::Triangulation::Index) { ++*calls; }
+};
+
+void Trace(benchmark::State& state) {
+  const auto pts = make_input(0, bench_n());
+  double off = 0, counting = 0;
+  long calls = 0;
+  for (auto _ : state) {
+    double t0 = cpu_now();
+    benchmark::DoNotOptimize(t2::delaunay(pts).size());
+    off += cpu_now() - t0;
+    t0 = cpu_now();
+    benchmark::DoNotOptimize(t2::delaunay_with(pts, CountingKernel{{}, &calls}).size());
+    counting += cpu_now() - t0;
+  }
+  const double it = double(state.iterations());
+  state.counters["off_s"] = off / it;
+  state.counters["counting_s"] = counting / it;
+  state.counters["counting/off"] = counting / off;
+  state.counters["hook_calls"] = double(calls) / it;
+}
+BENCHMARK(Trace)->Iterations(3)->Unit(benchmark::kSecond);
 
 // T² input (delaunay_t2.hpp): gen's both-sides (half behind, a hull across Ω) and antipodal (no
 // hull: the sphere), timed against uniform front points of the same size in the same run.
