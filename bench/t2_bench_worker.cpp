@@ -17,7 +17,9 @@
 //               delaunay t2|owned|divide|cgal|raw|exact (owned: t2::delaunay(std::move(P)), the
 //               result takes the input vector; divide: Guibas-Stolfi divide and conquer;
 //               raw: t2's code on plain double predicates, inexact; exact: exact arithmetic on
-//               every call, no floating-point filter).
+//               every call, no floating-point filter);
+//               hull3d quickhull|incremental|gift-wrap|cgal|qhull (points of R^3, INPUT cube or
+//               sphere; size: the number of hull vertices).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
 // cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
 // Cartesian doubles) so that every implementation sees the same doubles.
@@ -26,12 +28,15 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/ch_akl_toussaint.h>
+#include <CGAL/convex_hull_3.h>
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -44,6 +49,7 @@ extern "C" {
 #include "t2/filter.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
+#include "t2/hull3d.hpp"
 #include "t2/hull/layers.hpp"
 #include "t2/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
@@ -88,14 +94,27 @@ std::vector<t2::Point> make_input(const std::string& input, std::size_t n, std::
   return pts;
 }
 
-// The hull by qhull (libqhull_r, default options): its number of vertices.
-std::size_t qhull_hull(std::vector<double>& xy) {
+// The points of a 3-D input (cube, sphere).
+std::vector<t2::Point3> make_input3(const std::string& input, std::size_t n, std::uint64_t seed) {
+  if (input != "cube" && input != "sphere") throw Usage("hull3d takes the inputs cube and sphere, not " + input);
+  t2::gen::Options o;
+  o.n = n;
+  o.seed = seed;
+  std::vector<t2::Point3> P;
+  for (const auto& [x, y, z] : t2::gen::points3(t2::gen::kind_from_name(input), o)) P.push_back({x, y, z});
+  return P;
+}
+
+// The hull by qhull (libqhull_r, default options) of points of dimension `dim` (coordinates one
+// after the other): its number of vertices.
+std::size_t qhull_hull(std::vector<double>& coords, int dim = 2) {
   qhT qh_storage;
   qhT* qh = &qh_storage;
   QHULL_LIB_CHECK
   qh_zero(qh, stderr);
   char options[] = "qhull";
-  const int err = qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2), xy.data(), False, options, nullptr, stderr);
+  const int err =
+      qh_new_qhull(qh, dim, static_cast<int>(coords.size()) / dim, coords.data(), False, options, nullptr, stderr);
   const std::size_t h = err == 0 ? static_cast<std::size_t>(qh->num_vertices) : 0;
   qh_freeqhull(qh, !qh_ALL);
   int curlong = 0, totlong = 0;
@@ -199,6 +218,37 @@ Run delaunay_run(const std::string& impl, std::vector<t2::Point>& P) {
   throw Usage("unknown delaunay implementation " + impl);
 }
 
+// The number of vertices of a hull given by its facets.
+std::size_t vertex_count(const t2::Facets& F) {
+  std::vector<std::uint32_t> v;
+  for (const auto& f : F) v.insert(v.end(), f.begin(), f.end());
+  std::sort(v.begin(), v.end());
+  return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
+}
+
+Run hull3d_run(const std::string& impl, const std::vector<t2::Point3>& P) {
+  static const std::map<std::string, t2::Hull3dAlgorithm> own = {{"quickhull", t2::Hull3dAlgorithm::quickhull},
+                                                                 {"incremental", t2::Hull3dAlgorithm::incremental},
+                                                                 {"gift-wrap", t2::Hull3dAlgorithm::gift_wrap}};
+  if (auto it = own.find(impl); it != own.end())
+    return [&P, a = it->second] { return vertex_count(t2::hull_facets_3d(P, a)); };
+  if (impl == "cgal") {
+    auto C = std::make_shared<std::vector<Epick::Point_3>>();
+    for (const auto& p : P) C->emplace_back(p.x, p.y, p.z);
+    return [C] {
+      CGAL::Surface_mesh<Epick::Point_3> m;
+      CGAL::convex_hull_3(C->begin(), C->end(), m);
+      return static_cast<std::size_t>(m.number_of_vertices());
+    };
+  }
+  if (impl == "qhull") {
+    auto xyz = std::make_shared<std::vector<double>>();
+    for (const auto& p : P) xyz->insert(xyz->end(), {p.x, p.y, p.z});
+    return [xyz] { return qhull_hull(*xyz, 3); };
+  }
+  throw Usage("unknown hull3d implementation " + impl);
+}
+
 int work(int argc, char** argv) {
   if (argc != 6) throw Usage("usage: t2_bench_worker PROBLEM IMPL INPUT N SEED");
   const std::string problem = argv[1], impl = argv[2], input = argv[3];
@@ -210,10 +260,18 @@ int work(int argc, char** argv) {
   } catch (const std::exception&) {
     throw Usage("N and SEED are non-negative integers");
   }
-  if (problem != "hull" && problem != "delaunay" && problem != "layers")
-    throw Usage("unknown problem " + problem + " (hull, delaunay, layers)");
-  std::vector<t2::Point> P = make_input(input, n, seed);  // "owned" hands it to the result
-  const Run run = problem == "hull" ? hull_run(impl, P) : problem == "layers" ? layers_run(impl, P) : delaunay_run(impl, P);
+  if (problem != "hull" && problem != "delaunay" && problem != "layers" && problem != "hull3d")
+    throw Usage("unknown problem " + problem + " (hull, delaunay, layers, hull3d)");
+  std::vector<t2::Point> P;  // "owned" hands it to the result
+  std::vector<t2::Point3> P3;
+  Run run;
+  if (problem == "hull3d") {
+    P3 = make_input3(input, n, seed);
+    run = hull3d_run(impl, P3);
+  } else {
+    P = make_input(input, n, seed);
+    run = problem == "hull" ? hull_run(impl, P) : problem == "layers" ? layers_run(impl, P) : delaunay_run(impl, P);
+  }
   const long input_rss = rss_kb();
   const auto w0 = std::chrono::steady_clock::now();
   const double c0 = cpu_now();

@@ -244,6 +244,28 @@ TEST_F(CliBench, ConvexLayersBothWays) {
   EXPECT_EQ(t2("bench layers --vs cgal").status, 2);
 }
 
+// Hulls in R³: t2's three algorithms, CGAL's convex_hull_3 and qhull find the same number of
+// vertices on the cube and on the sphere (hull3d takes no plane input, and plane algorithms no
+// 3-D input).
+TEST_F(CliBench, Hull3dAgainstCgalAndQhull) {
+  for (const char* input : {"cube", "sphere"}) {
+    const auto r = t2(std::string("bench hull3d --n 600 --input ") + input + " --vs incremental,gift-wrap,cgal,qhull");
+    ASSERT_EQ(r.status, 0) << input << "\n" << r.err << r.out;
+    const auto rows = table(r.out);
+    ASSERT_EQ(rows.size(), 5u) << r.out;
+    const std::size_t v = rows.at("hull3d").at(600);
+    EXPECT_GT(v, 20u) << r.out;
+    for (const auto& [name, sizes] : rows) EXPECT_EQ(sizes.at(600), v) << name << " " << input << "\n" << r.out;
+  }
+  const auto d = t2("bench hull3d --n 300");  // the default input is the cube, the peers CGAL and qhull
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_TRUE(has(d.out, "--input cube")) << d.out;
+  EXPECT_EQ(table(d.out).size(), 3u) << d.out;
+  for (const char* args : {"bench hull3d --input uniform", "bench hull --input sphere", "bench hull --vs gift-wrap",
+                           "bench hull3d --vs raw", "bench hull3d --vs jarvis", "bench delaunay --vs incremental"})
+    EXPECT_EQ(t2(args).status, 2) << args;
+}
+
 // The progress line goes to stderr only, and only when stderr is a terminal or it is asked for:
 // forced at a 1 ms tick on a run of several sizes, stderr holds the lines rewritten in place and
 // then erased, and stdout is the same table as without it (same rows, no control character).

@@ -24,10 +24,14 @@ const std::vector<Impl>& impls() {
       {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
       {"owned", "delaunay", "owned", "t2::delaunay(std::move(points)): the result takes the input vector (one copy of the points)", true},
       {"divide", "delaunay", "divide", "t2::delaunay_divide (Guibas-Stolfi divide and conquer, quad-edge)", true},
-      {"cgal", "", "cgal", "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay)", true},
-      {"qhull", "hull", "qhull", "qhull (libqhull_r, default options: merges nearly collinear facets)", false},
-      {"raw", "", "raw", "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false},
-      {"exact", "", "exact", "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true},
+      {"hull3d", "hull3d", "quickhull", "t2::convex_hull_3d (R^3; quickhull: farthest point first)", true},
+      {"incremental", "hull3d", "incremental", "t2's randomized incremental 3-D hull (conflict lists)", true},
+      {"gift-wrap", "hull3d", "gift-wrap", "t2's 3-D gift wrapping, O(n) per hull edge", true},
+      {"cgal", "hull,delaunay,hull3d", "cgal",
+       "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay), convex_hull_3 (hull3d)", true},
+      {"qhull", "hull,hull3d", "qhull", "qhull (libqhull_r, default options: merges nearly coplanar facets)", false},
+      {"raw", "hull,delaunay", "raw", "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false},
+      {"exact", "hull,delaunay", "exact", "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true},
   };
   return all;
 }
@@ -38,22 +42,28 @@ const Impl* find_impl(const std::string& name) {
   return nullptr;
 }
 
-std::vector<std::string> algorithm_names() { return {"hull", "graham", "jarvis", "monotone", "quickhull", "merge", "layers", "delaunay"}; }
+std::vector<std::string> algorithm_names() {
+  return {"hull", "graham", "jarvis", "monotone", "quickhull", "merge", "layers", "delaunay", "hull3d"};
+}
 
 std::vector<std::string> default_peers(const std::string& algo) {
   if (algo == "hull") return {"cgal", "qhull"};
   if (algo == "delaunay") return {"divide", "cgal"};
   if (algo == "graham") return {"jarvis"};
   if (algo == "layers") return {"layers-graham"};
+  if (algo == "hull3d") return {"cgal", "qhull"};
   return {};
 }
 
 const std::vector<std::string>& input_names() {
   static const std::vector<std::string> names = {"uniform",  "disk",     "polygon-interior", "normal",
                                                  "clustered", "kuzmin",  "circle",           "segment",
-                                                 "boundary", "grid",     "duplicates"};
+                                                 "boundary", "grid",     "duplicates", "cube",
+                                                 "sphere"};
   return names;
 }
+
+bool is_3d_input(const std::string& input) { return input == "cube" || input == "sphere"; }
 
 std::optional<std::filesystem::path> find_worker() {
   namespace fs = std::filesystem;

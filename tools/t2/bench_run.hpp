@@ -15,7 +15,7 @@ namespace t2bench {
 /// An implementation that `t2 bench` can time.
 struct Impl {
   const char* name;     ///< its name on the command line and in the table
-  const char* problem;  ///< what it computes: "hull", "layers", "delaunay", or "" for hull and delaunay
+  const char* problem;  ///< what it computes: "hull", "layers", "delaunay", "hull3d", or a list ("hull,delaunay")
   const char* worker;   ///< its name for the worker
   const char* what;     ///< one line for the help
   bool exact;           ///< exact predicates: its answer must equal the algorithm's
@@ -27,11 +27,13 @@ const std::vector<Impl>& impls();
 const Impl* find_impl(const std::string& name);
 /// The names ALGO accepts (the t2 algorithms).
 std::vector<std::string> algorithm_names();
-/// The peers measured when `--vs` is not given (hull: cgal, qhull; delaunay: cgal; graham: jarvis;
-/// layers: layers-graham).
+/// The peers measured when `--vs` is not given (hull and hull3d: cgal, qhull; delaunay: divide,
+/// cgal; graham: jarvis; layers: layers-graham).
 std::vector<std::string> default_peers(const std::string& algo);
-/// The inputs (t2 gen kinds with front points, and clustered).
+/// The inputs (t2 gen kinds with front points, and clustered; cube and sphere for hull3d).
 const std::vector<std::string>& input_names();
+/// True for the inputs of R³ (cube, sphere), the only ones of hull3d.
+bool is_3d_input(const std::string& input);
 
 /// One measurement.
 struct Measurement {

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -34,7 +35,7 @@ struct Options {
   std::string algo;
   std::size_t n = 0;
   std::string range;
-  std::string input = "uniform";
+  std::string input;  // default: uniform, cube for hull3d
   std::vector<std::string> vs;
   std::string plot, csv;
   int repeat = 1;
@@ -60,8 +61,10 @@ std::vector<const Impl*> chosen(const Options& o) {
   if (peers.size() == 1 && peers[0] == "none") peers.clear();
   for (const auto& p : peers) {
     const Impl* i = find_impl(p);
-    const std::string problem = i == nullptr ? "" : *i->problem != 0 ? i->problem : "hull,delaunay";
-    if (i == nullptr || i == algo || problem.find(algo->problem) == std::string::npos)
+    bool serves = false;  // the peer's problem list ("hull,delaunay") names ALGO's problem
+    std::istringstream list(i == nullptr ? "" : i->problem);
+    for (std::string item; std::getline(list, item, ',');) serves |= item == algo->problem;
+    if (i == nullptr || i == algo || !serves)
       throw UsageError(fmt::format("--vs {}: not a peer of {} (peers: see t2 help bench)", p, o.algo));
     if ((p == "raw" || p == "exact") && o.algo != "hull" && o.algo != "delaunay")
       throw UsageError(fmt::format("--vs {}: the kernels are compared on hull and delaunay only", p));
@@ -121,14 +124,19 @@ std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, 
 }
 
 const char* size_word(const std::string& problem) {
-  return problem == "hull" ? "vertices" : problem == "layers" ? "layers" : "triangles";
+  return problem == "hull" || problem == "hull3d" ? "vertices" : problem == "layers" ? "layers" : "triangles";
 }
 
-int bench(const Options& o) {
+int bench(Options o) {
   const std::vector<const Impl*> run = chosen(o);
+  const bool space = std::string_view(run[0]->problem) == "hull3d";
+  if (o.input.empty()) o.input = space ? "cube" : "uniform";
   const auto& inputs = input_names();
   if (std::find(inputs.begin(), inputs.end(), o.input) == inputs.end())
     throw UsageError(fmt::format("--input {}: one of {}", o.input, fmt::join(inputs, ", ")));
+  if (is_3d_input(o.input) != space)
+    throw UsageError(fmt::format("--input {}: {} takes {}", o.input, o.algo,
+                                 space ? "points of R^3 (cube, sphere)" : "points of the plane (not cube, sphere)"));
   const std::vector<std::size_t> ns = sizes(o);
   if (ns.front() < 1) throw UsageError("--n must be at least 1");
   Progress::Setting shown{};
@@ -203,10 +211,11 @@ int bench(const Options& o) {
 
 std::string catalogue() {
   std::string s = "Algorithms (ALGO) and peers (--vs):\n";
-  for (const auto& i : impls()) s += fmt::format("  {:<10} {}\n", i.name, i.what);
+  for (const auto& i : impls()) s += fmt::format("  {:<13} {}\n", i.name, i.what);
   s += fmt::format("Inputs (--input, from t2 gen; normal = one cluster, clustered = 64): {}\n",
                    fmt::join(input_names(), ", "));
   s += "Default peers: hull --vs cgal,qhull; delaunay --vs divide,cgal; graham --vs jarvis; layers --vs layers-graham;\n"
+       "hull3d --vs cgal,qhull (on cube or sphere, the default cube; its t2 peers: incremental, gift-wrap);\n"
        "--vs none for ALGO alone.\n";
   return s;
 }
@@ -221,14 +230,15 @@ Action setup(CLI::App& app) {
       "Examples: t2 bench hull --n 10000000; t2 bench delaunay --input grid --repeat 3;\n"
       "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
       "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness; hull too).");
-  app.add_option("ALGO", o->algo, "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, layers, delaunay")
+  app.add_option("ALGO", o->algo,
+                 "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, layers, delaunay, hull3d")
       ->required();
   app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
   app.add_option("--range", o->range, "sizes from N1 to N2 in logarithmic steps")->type_name("N1..N2");
   app.add_option("--per-decade", o->per_decade, "steps of --range per factor 10 (default 2)")
       ->type_name("K")
       ->check(CLI::Range(1, 20));
-  app.add_option("--input", o->input, "the generator (default uniform)")->type_name("KIND");
+  app.add_option("--input", o->input, "the generator (default uniform; cube for hull3d)")->type_name("KIND");
   app.add_option("--vs", o->vs, "peers, comma-separated (default: see below)")->type_name("PEER")->delimiter(',');
   app.add_option("--repeat", o->repeat, "runs per measurement; the table gives medians (default 1)")
       ->type_name("R")
