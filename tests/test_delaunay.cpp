@@ -221,5 +221,25 @@ TEST(Delaunay, TakenVectorGivesTheSameResult) {
   }
 }
 
+// unpermute (spatial_sort.hpp) against its definition, points[order[m]] = old points[m], on
+// random and BRIO orders of every size around its eight ranges (n < 8, n = 8k ± 1, large).
+TEST(Delaunay, UnpermuteRestoresTheInputOrder) {
+  std::mt19937 rng(5);
+  for (std::size_t n : {0, 1, 2, 3, 7, 8, 9, 15, 16, 17, 63, 100, 1001, 40000}) {
+    std::vector<Point> pts;
+    for (std::size_t k = 0; k < n; ++k) pts.push_back(Point::cartesian(double(k), double((k * 7919) % 101)));
+    std::vector<std::uint32_t> shuffled(n);
+    std::iota(shuffled.begin(), shuffled.end(), 0u);
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    for (const auto& order : {shuffled, spatial_order(pts)}) {
+      std::vector<Point> moved;
+      for (std::uint32_t k : order) moved.push_back(pts[k]);
+      std::vector<std::uint32_t> scratch = order;
+      unpermute(moved, scratch);
+      EXPECT_TRUE(moved == pts) << "n = " << n;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace t2

@@ -129,7 +129,7 @@ void Triangulation::renumber(std::vector<Index> order, std::span<const Point> in
 
 void Triangulation::renumber(std::vector<Index> order) {
   renumber_indices(order);
-  unpermute(points_, order);
+  unpermute(points_, order);  // order is scratch from here on
 }
 
 void Triangulation::finish() {

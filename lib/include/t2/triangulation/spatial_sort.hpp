@@ -94,20 +94,49 @@ inline std::vector<std::uint32_t> spatial_order(std::span<const Point> points, s
 //< spatial-order
 
 /// Moves the points back from an insertion `order` (a permutation of their indices), in place:
-/// afterwards points[order[m]] is the old points[m]. Follows the cycles of the permutation with
-/// one bit per point, so a construction that owns the points restores them without a copy.
-inline void unpermute(std::vector<Point>& points, const std::vector<std::uint32_t>& order) {
-  std::vector<bool> done(points.size());
-  for (std::size_t s = 0; s < points.size(); ++s) {
-    if (done[s]) continue;
-    Point carry = points[s];
-    std::size_t k = s;
-    do {
-      k = order[k];
-      std::swap(carry, points[k]);
-      done[k] = true;
-    } while (k != s);
+/// afterwards points[order[m]] is the old points[m]; `order` is used as scratch space.
+///
+/// Following the cycles of the permutation would need no memory, but it is a chase through a
+/// random permutation, one cache miss after the other (50 to 110 ms at 10⁶ points against 18). Instead
+/// the destinations are cut into 8 ranges, filled from the top: the points bound for the lowest
+/// range go to a buffer (1/8 of the points, 3 bytes a point), the others are compacted to the
+/// front, which frees the top range; then, while points remain, those bound for the free range
+/// are written there (sources and destinations never overlap) and the rest compacted again,
+/// which frees the next range down; the buffer goes last. Each pass reads the remaining points
+/// in order and scatters one range: about 2.5 reads and one write per point, all independent.
+inline void unpermute(std::vector<Point>& points, std::vector<std::uint32_t>& order) {
+  const std::size_t n = points.size();
+  if (n == 0) return;
+  const std::size_t lo = (n + 7) / 8;  // destinations [0, lo) go through the buffer
+  std::vector<Point> low(lo, points.front());
+  std::size_t live = 0;  // points[0, live) are still to place, bound for order[0, live)
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::uint32_t d = order[m];
+    if (d < lo) {
+      low[d] = points[m];
+    } else {
+      points[live] = points[m];
+      order[live++] = d;
+    }
   }
+  // Invariant: the points bound for [lo, hi) are points[0, live), live = hi − lo, and
+  // points[live, n) is free or final; the free range [live, hi) receives its own points.
+  for (std::size_t hi = n; hi > lo;) {
+    const std::size_t from = std::max(lo, live);
+    std::size_t keep = 0;
+    for (std::size_t m = 0; m < live; ++m) {
+      const std::uint32_t d = order[m];
+      if (d >= from) {
+        points[d] = points[m];
+      } else {
+        points[keep] = points[m];
+        order[keep++] = d;
+      }
+    }
+    hi = from;
+    live = keep;
+  }
+  std::copy(low.begin(), low.end(), points.begin());
 }
 
 }  // namespace t2
