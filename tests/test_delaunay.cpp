@@ -241,5 +241,30 @@ TEST(Delaunay, UnpermuteRestoresTheInputOrder) {
   }
 }
 
+// The Hilbert index of spatial_sort.hpp against the curve's defining property: on the 2^b × 2^b
+// grid it numbers every cell once, and cells with consecutive numbers share a side. And
+// spatial_order is a permutation.
+TEST(Delaunay, HilbertIndexWalksTheGridCellToCell) {
+  for (int b = 1; b <= 6; ++b) {
+    const std::uint32_t side = 1u << b;
+    std::vector<std::pair<int, int>> cell(std::size_t(side) * side, {-1, -1});
+    for (std::uint32_t x = 0; x < side; ++x)
+      for (std::uint32_t y = 0; y < side; ++y) {
+        const std::uint64_t d = detail::hilbert_index(x, y, b);
+        ASSERT_LT(d, cell.size());
+        EXPECT_EQ(cell[d].first, -1) << "two cells numbered " << d;
+        cell[d] = {int(x), int(y)};
+      }
+    for (std::size_t d = 1; d < cell.size(); ++d)
+      EXPECT_EQ(std::abs(cell[d].first - cell[d - 1].first) + std::abs(cell[d].second - cell[d - 1].second), 1)
+          << "b = " << b << ", d = " << d;
+  }
+  for (std::size_t n : {0, 1, 17, 5000}) {
+    auto order = spatial_order(testing::gen_points(gen::Kind::normal, n, 3, 4));
+    std::sort(order.begin(), order.end());
+    for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(order[k], k);
+  }
+}
+
 }  // namespace
 }  // namespace t2

