@@ -54,9 +54,9 @@
 ///  - `delaunay(std::move(points))`, the result takes the caller's vector: the copy in
 ///    insertion order replaces it and is moved back into the input order in place at the end
 ///    (`unpermute`, through a buffer of an eighth of the points): 24 + 4 + 48 + 3 = 79 bytes a
-///    point at the peak, at the same speed. A caller that needs its points afterwards reads them
-///    in `points()` of the result, the same points at the same indices: this is the way to
-///    triangulate under 100 bytes a point while keeping the points.
+///    point at the peak, in about the same time (1 to 6 % more). A caller that needs its points
+///    afterwards reads them in `points()` of the result, the same points at the same indices:
+///    this is the way to triangulate under 100 bytes a point while keeping the points.
 ///
 /// `t2 bench delaunay --n 1000000 --vs owned,cgal` measures both (the peak resident memory of
 /// the process, which adds about 4 MB of code and libraries to these counts).
@@ -286,7 +286,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
 
 /// The same on a vector of points that the result takes over: `points()` of the result holds
 /// them afterwards, in the same order. The construction keeps one copy of the points instead of
-/// two: 79 bytes a point at the peak against 100 (see the file comment), at the same speed.
+/// two: 79 bytes a point at the peak against 100 (see the file comment), in about the same time.
 template <class K = DelaunayKernel>
 Triangulation delaunay_with(std::vector<Point>&& points, K kernel = {}) {
   const std::span<const Point> input(points);
