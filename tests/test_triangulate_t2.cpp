@@ -9,6 +9,7 @@
 // floating-point computation far from ties.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -134,8 +135,9 @@ void expect_tiling(const TriangulationT2& r, const std::vector<Point>& qs) {
 }
 
 // Certificates and the oracle of coverage (no open hemisphere <=> no hull <=> no v∞).
-void expect_certified(const std::vector<Point>& P, std::size_t samples = 300) {
-  const TriangulationT2 r = triangulate_t2(P);
+void expect_certified(const std::vector<Point>& P, std::size_t samples = 300,
+                      InsertionOrder how = InsertionOrder::spatial) {
+  const TriangulationT2 r = triangulate_t2(P, how);
   ASSERT_EQ(certify(r), "");
   bool no_hull = false;
   try {
@@ -170,6 +172,7 @@ TEST(TriangulateT2, GeneratedInputs) {
       const auto P = generated(k, 5 + seed * 3, seed);
       SCOPED_TRACE(std::string(gen::name(k)) + " seed " + std::to_string(seed));
       expect_certified(P, 120);
+      expect_certified(P, 60, InsertionOrder::input);
       covered += triangulate_t2(P).tr.hull_edges().empty();
     }
   EXPECT_GT(covered, 20);  // the antipodal inputs cover the sphere
@@ -192,7 +195,8 @@ TEST(TriangulateT2, RandomSidesAndAntipodes) {
     SCOPED_TRACE(seed);
     try {
       expect_certified(P, 100);
-      lunes += !triangulate_t2(P).lunes.empty();
+      expect_certified(P, 50, InsertionOrder::input);
+      lunes += !triangulate_t2(P, InsertionOrder::input).lunes.empty();
     } catch (const Undefined& e) {
       // only the two cases of triangulate_t2.hpp, checked below on hand-made input
       const std::string w = e.what();
@@ -219,9 +223,13 @@ int count_kind(const Triangulation& tr, FaceKind k) {
   return c;
 }
 
+// The figures are about the order of the insertions (¬z arrives while z is a hull vertex, then t
+// or s): they insert in input order, as the seed does.
+constexpr InsertionOrder seed_order = InsertionOrder::input;
+
 TEST(TriangulateT2, Figure518AntipodeOfAHullVertex) {
   const std::vector<Point> P = {z, w, u, antipode(z)};
-  const TriangulationT2 r = triangulate_t2(P);
+  const TriangulationT2 r = triangulate_t2(P, seed_order);
   ASSERT_EQ(certify(r), "");
   EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}));
   EXPECT_EQ(count_kind(r.tr, FaceKind::lune), 2);
@@ -241,7 +249,7 @@ TEST(TriangulateT2, Figure518AntipodeOfAHullVertex) {
   for (double y : {-1.001, -0.999}) {
     std::vector<Point> Q = P;
     Q.push_back(Point::cartesian(-2, y));
-    const TriangulationT2 s = triangulate_t2(Q);
+    const TriangulationT2 s = triangulate_t2(Q, seed_order);
     ASSERT_EQ(certify(s), "");
     EXPECT_EQ(faces(s.tr).count(y < -1 ? std::set<Index>{0, 1, 4} : std::set<Index>{0, 2, 4}), 1u) << y;
   }
@@ -252,7 +260,7 @@ TEST(TriangulateT2, Figure518AntipodeOfAHullVertex) {
 // (the seed names the last one "tww").
 TEST(TriangulateT2, Figure519FlatFace) {
   const std::vector<Point> P = {z, w, u, antipode(z), Point::cartesian(1, 0)};
-  const TriangulationT2 r = triangulate_t2(P);
+  const TriangulationT2 r = triangulate_t2(P, seed_order);
   ASSERT_EQ(certify(r), "");
   EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{4, 2, 0}, {4, 1, 2}, {4, 0, 3}, {4, 3, 1}, {0, 2, 3}, {1, 2, 3}}));
   EXPECT_EQ(count_kind(r.tr, FaceKind::lune), 2);
@@ -265,7 +273,7 @@ TEST(TriangulateT2, Figure519FlatFace) {
 TEST(TriangulateT2, Figure520LunesDisappear) {
   for (const Point& s : {Point::cartesian(-2, -1), Point(0, -2, -1), Point(-1, -2, -1)}) {
     const std::vector<Point> P = {z, w, u, antipode(z), s};
-    const TriangulationT2 r = triangulate_t2(P);
+    const TriangulationT2 r = triangulate_t2(P, seed_order);
     ASSERT_EQ(certify(r), "") << to_string(s);
     EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{4, 0, 1}, {4, 1, 3}, {4, 3, 2}, {4, 2, 0}, {0, 1, 2}, {1, 2, 3}}));
     EXPECT_EQ(count_kind(r.tr, FaceKind::proper), 6) << to_string(s);
@@ -273,7 +281,7 @@ TEST(TriangulateT2, Figure520LunesDisappear) {
   }
   // after figure 5.19 the lunes go, the flat face stays (it has no interior to insert into)
   const std::vector<Point> P = {z, w, u, antipode(z), Point::cartesian(1, 0), Point::cartesian(-2, -1)};
-  const TriangulationT2 r = triangulate_t2(P);
+  const TriangulationT2 r = triangulate_t2(P, seed_order);
   ASSERT_EQ(certify(r), "");
   EXPECT_EQ(count_kind(r.tr, FaceKind::lune), 0);
   EXPECT_EQ(count_kind(r.tr, FaceKind::flat), 1);
@@ -331,6 +339,32 @@ TEST(TriangulateT2, DuplicatesAndInteriorAntipodes) {
   for (std::size_t k = 10; k < 20; ++k) P.push_back(antipode(P[k]));
   expect_certified(P);
   EXPECT_EQ(triangulate_t2(P).tr.duplicates().size(), 10u);
+}
+
+// In the spatial order a duplicate may come before the equal point of smaller index: the vertex
+// is renamed (the smaller index kept, certify checks it), in the antipodal edges too. Figure 5.18
+// with z and ¬z written again at other scales, before and after, in both orders, then shuffled.
+TEST(TriangulateT2, DuplicatesOfAnAntipodalPair) {
+  const Point z2(2, 0, 0), nz = antipode(z), nz3(-3, 0, 0);
+  std::vector<Point> P = {z2, nz3, w, u, z, nz, Point(4, 0, 0), Point(-5, 0, 0)};
+  std::mt19937_64 rng(3);
+  for (int k = 0; k < 20; ++k) {
+    SCOPED_TRACE(k);
+    for (InsertionOrder how : {InsertionOrder::spatial, InsertionOrder::input}) {
+      const TriangulationT2 r = triangulate_t2(P, how);
+      ASSERT_EQ(certify(r), "");
+      EXPECT_EQ(r.tr.duplicates().size(), 4u);
+      ASSERT_EQ(r.lunes.size(), 1u);
+      const Index a = r.lunes[0].z, b = r.lunes[0].nz;
+      EXPECT_TRUE(P[a] == antipode(P[b]));
+      for (Index v = 0; v < P.size(); ++v) {  // the vertices z and ¬z: the smallest equal indices
+        if (P[v] == P[a]) EXPECT_GE(v, a);
+        if (P[v] == P[b]) EXPECT_GE(v, b);
+      }
+      expect_tiling(r, queries(100, 9));
+    }
+    std::shuffle(P.begin(), P.end(), rng);
+  }
 }
 
 // The exact bisector side against long double, on random hull corners, far from ties.

@@ -161,7 +161,7 @@ void antipodal_figures(const std::filesystem::path& dir, int& written, int& coun
     return Point(-(n1[0] + n2[0]), -(n1[1] + n2[1]), -(n1[2] + n2[2]));
   };
   auto draw = [&](const std::vector<Point>& P, const std::string& name) {
-    const t2::TriangulationT2 r = t2::triangulate_t2(P);
+    const t2::TriangulationT2 r = t2::triangulate_t2(P, t2::InsertionOrder::input);  // the seed's order
     const Triangulation& tr = r.tr;
     dr::Figure f;
     const dr::Style proper = dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.1);

@@ -2,6 +2,7 @@
 #include "t2/triangulation/triangulate_t2.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,7 @@
 #include "t2/hull/convex_hull.hpp"
 #include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
+#include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulate.hpp"
 
 namespace t2 {
@@ -45,7 +47,9 @@ std::string point_name(std::span<const Point> input, Index k) {
 /// The incremental construction (Algorithm 9) on one triangulation.
 class Builder {
  public:
-  Builder(Triangulation& tr, std::vector<AntipodalEdge>& lunes) : tr_(tr), lunes_(lunes) {}
+  /// `order[v]` is the input index of point v of tr (the points are in insertion order).
+  Builder(Triangulation& tr, std::vector<AntipodalEdge>& lunes, const std::vector<Index>& order)
+      : tr_(tr), lunes_(lunes), order_(order) {}
 
   /// Inserts the point p (an index into tr's points); returns false when p must wait.
   bool insert(Index p) {
@@ -58,7 +62,7 @@ class Builder {
  private:
   /// Where a point is: inside face t, on the edge opposite slot i of t, or on vertex i of t.
   struct Where {
-    enum Kind { none, face, edge, vertex } kind = none;
+    enum Kind { none, face, edge, vertex, outside } kind = none;  // outside: beyond the hull
     Index t = 0;
     int i = 0;
   };
@@ -92,8 +96,10 @@ class Builder {
   }
 
   //> t2-walk
-  /// The visibility walk from the face last_ with the exact sides; after 4·(faces) + 64
-  /// steps (it may circle on the sphere) or at a flat face, a scan of all faces.
+  /// The visibility walk from the face last_ (finite) with the exact sides; it stops
+  /// at an infinite face (p is strictly outside the hull: `outside`); after 4·(faces)
+  /// + 64 steps (it may circle on the sphere) or at a flat face, a scan of the finite
+  /// faces (`none` when p is in none of them, outside the hull).
   Where locate(const Point& p) {
     Index t = last_;
     int from = -1;
@@ -112,17 +118,28 @@ class Builder {
       }
       from = static_cast<int>(tr_.twin(t, cross) % 3);
       t = tr_.neighbor(t, cross);
+      if (tr_.is_infinite(t)) return {Where::outside, t, 0};
     }
     for (Index f = 0; f < tr_.size(); ++f)
       if (!tr_.is_infinite(f))
         if (const Where w = classify(f, p); w.kind != Where::none) return w;
+    if (hull_) return {};
     throw std::logic_error("triangulate_t2: a point in no face");
   }
   //< t2-walk
 
   bool insert_located(Index p, Where w) {
-    if (w.kind == Where::vertex) {
-      tr_.add_duplicate(p, tr_.vertex(w.t, w.i));
+    if (w.kind == Where::vertex) {  // the kept point is the one of smaller input index
+      const Index v = tr_.vertex(w.t, w.i);
+      if (order_[p] > order_[v]) {
+        tr_.add_duplicate(p, v);
+        return true;
+      }
+      tr_.rename_vertex(w.t, v, p);
+      for (AntipodalEdge& e : lunes_)
+        for (Index* x : {&e.z, &e.nz, &e.u, &e.w})
+          if (*x == v) *x = p;
+      tr_.add_duplicate(v, p);
       return true;
     }
     if (w.kind == Where::face) {
@@ -137,6 +154,9 @@ class Builder {
   //> t2-outside
   bool insert_with_hull(Index p) {
     const Point& q = P(p);
+    // Most points fall inside the hull: the walk finds them.
+    if (const Where w = locate(q); w.kind != Where::outside && w.kind != Where::none)
+      return insert_located(p, w);
     // The hull edges a → b, from the infinite triangles (b, a, v∞) around v∞.
     int pos = 0;
     Index seen = kNone, t = inf_;
@@ -150,16 +170,17 @@ class Builder {
       if (o == 0) zero.emplace_back(a, b);
       t = tr_.neighbor(t, (k + 1) % 3);
     } while (t != inf_);
-    if (seen == kNone)  // p in the closed hull: a face, an edge or a vertex
-      return insert_located(p, locate(q));
+    if (seen == kNone)
+      throw std::logic_error("triangulate_t2: the walk left the hull for a point in it");
     if (pos > 0) {  // the hull survives (step 34, 35)
       tr_.insert_in_face(seen, p);
       const Index n = static_cast<Index>(tr_.size());
+      for (Index f : {seen, n - 2, n - 1})
+        if (!tr_.is_infinite(f)) last_ = f;  // (p, b, a): finite for good, flips keep it
       for (Index f : {seen, n - 2, n - 1}) {
         if (tr_.vertex(f, 2) == kInf) inf_ = detail::flip_hull_chain(tr_, f);
         if (tr_.vertex(f, 1) == kInf) inf_ = detail::flip_hull_chain(tr_, f);
       }
-      if (tr_.is_infinite(last_)) last_ = find_finite();
       return true;
     }
     // ¬p is in the closed hull: the hull is destroyed. Where is ¬p?
@@ -175,6 +196,7 @@ class Builder {
       return false;
     }
     tr_.rename_vertex(inf_, kInf, p);  // p replaces v∞ everywhere
+    last_ = inf_;
     if (before.first != kNone)  // step 31: the antipode of the hull vertex z
       lunes_.push_back({before.second, p, before.first, after.second});
     hull_ = false;
@@ -182,14 +204,9 @@ class Builder {
   }
   //< t2-outside
 
-  Index find_finite() const {
-    for (Index f = 0; f < tr_.size(); ++f)
-      if (!tr_.is_infinite(f)) return f;
-    throw std::logic_error("triangulate_t2: no finite triangle");
-  }
-
   Triangulation& tr_;
   std::vector<AntipodalEdge>& lunes_;
+  const std::vector<Index>& order_;
   bool hull_ = true;
   Index inf_ = 1;   // an infinite triangle while the hull exists
   Index last_ = 0;  // a finite triangle near the last insertion
@@ -223,28 +240,37 @@ void collinear(std::span<const Point> input, Triangulation& tr, bool one_point) 
 }  // namespace
 
 //> triangulate-t2
-TriangulationT2 triangulate_t2(std::span<const Point> input) {
+TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how) {
   if (input.size() > kNone / 6)
     throw BadInput("triangulate: more than " + std::to_string(kNone / 6) + " points");
-  TriangulationT2 out{Triangulation({input.begin(), input.end()}), {}};
-  Triangulation& tr = out.tr;
   const Index n = static_cast<Index>(input.size());
+  // Built on a copy of the points in insertion order (point m is the m-th inserted), so that
+  // the walks touch memory in order; the input indices come back at the end.
+  std::vector<Index> order(n);
+  if (how == InsertionOrder::spatial) order = sphere_order(input);
+  else std::iota(order.begin(), order.end(), Index(0));
+  std::vector<Point> sorted;
+  sorted.reserve(n);
+  for (Index m : order) sorted.push_back(input[m]);
+  TriangulationT2 out;
   if (n == 0) return out;
-  // the first triangle: p0, b the first point ≠ ±p0, c the first off their circle
-  const Point& a = input[0];
+  Triangulation tr(std::move(sorted));
+  const std::vector<Point>& P = tr.points();
+  // the first triangle: P[0], b the first point ≠ ±P[0], c the first off their circle
   Index b = 1, c = 0;
-  while (b < n && (input[b] == a || input[b] == antipode(a))) ++b;
+  while (b < n && (P[b] == P[0] || P[b] == antipode(P[0]))) ++b;
   for (Index k = b + 1; k < n && c == 0; ++k)
-    if (orient(a, input[b], input[k]) != ZERO) c = k;
+    if (orient(P[0], P[b], P[k]) != ZERO) c = k;
   if (c == 0) {  // all on one great circle
-    auto same = [&](const Point& p) { return p == a; };
-    collinear(input, tr, std::all_of(input.begin(), input.end(), same));
-    tr.finish();
+    auto same = [&](const Point& p) { return p == P[0]; };
+    out.tr = Triangulation({input.begin(), input.end()});
+    collinear(input, out.tr, std::all_of(input.begin(), input.end(), same));
+    out.tr.finish();
     return out;
   }
-  if (orient(a, input[b], input[c]) > 0) tr.make_triangle(0, b, c, n);
+  if (orient(P[0], P[b], P[c]) > 0) tr.make_triangle(0, b, c, n);
   else tr.make_triangle(b, 0, c, n);
-  Builder builder(tr, out.lunes);
+  Builder builder(tr, out.lunes, order);
   std::vector<Index> waiting;  // points whose antipode lies inside a hull edge
   for (Index p = 1; p < n; ++p) {
     if (p == b || p == c) continue;
@@ -269,12 +295,17 @@ TriangulationT2 triangulate_t2(std::span<const Point> input) {
   if (!still.empty()) {
     builder.insert(still.front());  // sets the blocking edge again
     const auto [e0, e1] = builder.blocking_edge();
-    throw Undefined("triangulate: the antipode of " + point_name(input, still.front()) +
-                    " lies inside the hull edge from " + point_name(input, e0) + " to " + point_name(input, e1) +
+    throw Undefined("triangulate: the antipode of " + point_name(input, order[still.front()]) +
+                    " lies inside the hull edge from " + point_name(input, order[e0]) + " to " +
+                    point_name(input, order[e1]) +
                     " of the other points, which lie in the closed hemisphere of that edge's great circle: the "
                     "face beyond it would be the open hemisphere bounded by the whole circle, not a triangle");
   }
+  for (AntipodalEdge& e : out.lunes)
+    for (Index* x : {&e.z, &e.nz, &e.u, &e.w}) *x = order[*x];
+  tr.renumber(std::move(order), input);
   tr.finish();
+  out.tr = std::move(tr);
   return out;
 }
 

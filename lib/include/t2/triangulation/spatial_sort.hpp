@@ -110,6 +110,30 @@ inline std::vector<std::uint32_t> spatial_order(std::span<const Point> points, s
 }
 //< spatial-order
 
+/// The BRIO–Hilbert insertion order of points anywhere on T², front, back or on Ω (a permutation
+/// of their indices), for the incremental triangulation of the whole sphere (triangulate_t2.hpp):
+/// `spatial_order` would put a back point next to the front points around its antipode. Each
+/// point (w, x, y) goes to the face of the cube [−1, 1]³ that its ray from the centre crosses —
+/// the face of its largest coordinate in absolute value, with its sign — at the other two
+/// coordinates divided by that one; the six faces are laid side by side in the plane (face f is
+/// the square [3f − 1, 3f + 1] × [−1, 1]) and `spatial_order` sorts those planar points, so that
+/// points near each other on the sphere are near each other in the order except across the
+/// cube's edges. Deterministic (correctly rounded quotients, `spatial_order`'s fixed seed).
+inline std::vector<std::uint32_t> sphere_order(std::span<const Point> points, std::uint64_t seed = 0x7432u) {
+  std::vector<Point> strip;
+  strip.reserve(points.size());
+  for (const Point& p : points) {
+    const double c[3] = {p.w(), p.x(), p.y()};
+    int d = 0;  // the largest coordinate in absolute value
+    for (int i = 1; i < 3; ++i)
+      if (std::fabs(c[i]) > std::fabs(c[d])) d = i;
+    const int face = 2 * d + (c[d] < 0);
+    const double s = std::fabs(c[d]);
+    strip.push_back(Point::cartesian(3 * face + c[(d + 1) % 3] / s, c[(d + 2) % 3] / s));
+  }
+  return spatial_order(strip, seed);
+}
+
 /// Moves the points back from an insertion `order` (a permutation of their indices), in place:
 /// afterwards points[order[m]] is the old points[m]; `order` is used as scratch space.
 ///

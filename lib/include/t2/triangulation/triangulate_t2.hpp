@@ -5,18 +5,23 @@
 /// point that destroys the hull takes the place of v∞; the antipode of a hull vertex z joins z
 /// by the half great circle along the bisector of the hull angle at z (figures 5.18–5.20).
 ///
-/// **Order.** The first point a, the first point b ≠ ±a, the first point c off the great
-/// circle of a and b make the first triangle (with v∞, triangulation.hpp); then every other
-/// point in input order, except that a point p whose antipode ¬p lies inside a hull edge waits
-/// (see *Undefined*) until the hull is gone, and is inserted right after the point that
-/// destroyed it.
+/// **Order.** The points are inserted in `sphere_order` (spatial_sort.hpp: BRIO rounds, each
+/// along a Hilbert curve over the six faces of a cube around the sphere), or in input order on
+/// request (`InsertionOrder::input`: the seed's order, which its figures 5.18–5.20 are about; a
+/// plain triangulation is not unique, and the two orders give different ones). In that order:
+/// the first point a, the first point b ≠ ±a, the first point c off the great circle of a and b
+/// make the first triangle (with v∞, triangulation.hpp); then every other point, except that a
+/// point p whose antipode ¬p lies inside a hull edge waits (see *Undefined*) until the hull is
+/// gone, and is inserted right after the point that destroyed it. Of equal points the one of
+/// smallest input index is the vertex, whichever comes first.
 ///
 /// **While the hull exists** (the points inserted lie in an open hemisphere, v∞ is a vertex),
-/// a new point p is compared with every hull edge a → b (interior to its left): let `pos` count
-/// the edges with orient(a, b, p) > 0. The closed hull is the intersection of those closed
-/// half-planes, so ¬p lies in the closed hull iff pos = 0.
-///  - pos > 0 and p sees no edge (orient < 0 for none): p is in the closed hull; the walk
-///    finds its face, edge or vertex (insert in the face, on the edge, or merge a duplicate).
+/// the walk below locates a new point p from the face of the point before; if it steps into an
+/// infinite face, p is strictly outside the hull, and p is compared with every hull edge a → b
+/// (interior to its left): let `pos` count the edges with orient(a, b, p) > 0. The closed hull is
+/// the intersection of those closed half-planes, so ¬p lies in the closed hull iff pos = 0.
+///  - p in the closed hull (the walk ends in a finite face): insert in the face, on the edge, or
+///    merge a duplicate.
 ///  - pos > 0 and p sees some edge strictly: the hull survives. Insert p in the infinite face of
 ///    such an edge and flip away the reflex angles at p (step 35, `detail::flip_hull_chain`).
 ///  - pos = 0, ¬p strictly inside the hull: p sees every hull edge strictly; p replaces v∞ in
@@ -41,7 +46,12 @@
 /// angle is below 180°, antipodal_edge.hpp), so "left of its three edges" is its interior.
 ///
 /// **Running time.** O(n) per point in the worst case (the hull test, a walk of O(n) faces,
-/// O(n) flips), O(n²) in all, as the seed says; on random input the walk dominates.
+/// O(n) flips), O(n²) in all, as the seed says, and in input order that is what random input
+/// shows: each walk starts at the previous point, anywhere on the sphere, across the long thin
+/// triangles that insertion without flips leaves. In the spatial order a walk starts next to its
+/// point, the hull test runs only for points outside the hull, and the walks stay short (about
+/// 30 steps a point at 10⁵ points, 50 at 10⁶): 10⁶ points in about 3 s, growing as n^1.2–1.35
+/// (bench/bench_triangulate_t2.cpp).
 ///
 /// **Undefined** (throws `t2::Undefined`, exit status 3 of `t2 triangulate`), naming the points:
 /// all points on one great circle and in no open half of it (no triangle, and the circle is no
@@ -66,10 +76,17 @@ struct TriangulationT2 {
   std::vector<AntipodalEdge> lunes;   ///< one entry per antipodal edge z → ¬z ever created
 };
 
-/// The triangulation of any points of T² by Algorithm 9 (see the file comment): every point is
-/// a vertex or a reported duplicate. Throws `Undefined` in the cases of the file comment,
-/// `BadInput` for more than 715 827 882 points.
-TriangulationT2 triangulate_t2(std::span<const Point> input);
+/// The order in which `triangulate_t2` inserts the points.
+enum class InsertionOrder {
+  spatial,  ///< `sphere_order` (spatial_sort.hpp): BRIO rounds along a Hilbert curve on the sphere
+  input     ///< the input order, as the seed's Algorithm 9 and its figures 5.18–5.20 take them
+};
+
+/// The triangulation of any points of T² by Algorithm 9 (see the file comment), the points
+/// inserted in the order `how`: every point is a vertex or a reported duplicate (the vertex is
+/// the equal point of smallest input index). Throws `Undefined` in the cases of the file
+/// comment, `BadInput` for more than 715 827 882 points.
+TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how = InsertionOrder::spatial);
 
 /// What a face is: a proper triangle (orient > 0), a lune (two antipodal vertices, orient 0)
 /// or flat (orient 0, no antipodal pair: three vertices on one great circle, no area).
