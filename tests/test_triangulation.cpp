@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
 
 #include "t2/orient.hpp"
+#include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 #include "testing.hpp"
 
@@ -166,6 +168,62 @@ TEST(Triangulation, ValidateFindsBrokenTwins) {
   Triangulation bad = tr;
   bad.rename_vertex(0, 3, 1);  // vertex 1 twice: pinched star, degenerate triangles
   EXPECT_NE(bad.validate(), "");
+}
+
+// The arrays of tr, to be broken and handed to `assign`.
+struct Arrays {
+  std::vector<Index> v, n;
+};
+Arrays arrays(const Triangulation& tr) {
+  Arrays a;
+  for (Index t = 0; t < tr.size(); ++t)
+    for (int i = 0; i < 3; ++i) a.v.push_back(tr.vertex(t, i)), a.n.push_back(tr.twin(t, i));
+  return a;
+}
+Triangulation with(const Triangulation& tr, Arrays a) {
+  Triangulation out(tr.points());
+  out.assign(std::move(a.v), std::move(a.n));
+  return out;
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// Seed 000's figure 5.19 (Algorithm 9 in input order, triangulate_t2.hpp): a legitimate flat
+// face passes; the same arrays with every face turned round, or with two twins exchanged, fail.
+// A flat face whose vertices lie in no open half of their great circle fails, and so does a flat
+// face in a triangulation with v∞.
+TEST(Triangulation, ValidateAcceptsTheFlatFacesOfT2AndNothingBroken) {
+  const Point z = Point::cartesian(0, 0), w = Point::cartesian(2, 0), u = Point::cartesian(3, 4);
+  const TriangulationT2 r =
+      triangulate_t2(std::vector<Point>{z, w, u, antipode(z), Point::cartesian(1, 0)}, InsertionOrder::input);
+  const Triangulation& tr = r.tr;
+  Index flat = Triangulation::none;
+  for (Index t = 0; t < tr.size(); ++t)
+    if (face_kind(tr, t) == FaceKind::flat) flat = t;
+  ASSERT_NE(flat, Triangulation::none);
+  EXPECT_EQ(tr.validate(), "");
+  EXPECT_EQ(with(tr, arrays(tr)).validate(), "");
+  // every face turned round: slots 1 and 2 exchanged, in the vertices and in the twins' slots
+  const Arrays a = arrays(tr);
+  Arrays mirror = a;
+  auto swap12 = [](Index e) { return e % 3 == 0 ? e : e % 3 == 1 ? e + 1 : e - 1; };
+  for (Index e = 0; e < a.v.size(); ++e) {
+    mirror.v[e] = a.v[swap12(e)];
+    mirror.n[e] = swap12(a.n[swap12(e)]);
+  }
+  const std::string turned = with(tr, mirror).validate();
+  EXPECT_TRUE(has(turned, "not counter-clockwise")) << turned;
+  Arrays twins = a;  // a bad neighbour: two twins of the flat face exchanged
+  std::swap(twins.n[3 * flat], twins.n[3 * flat + 1]);
+  EXPECT_TRUE(has(with(tr, twins).validate(), "twin")) << with(tr, twins).validate();
+  // A tetrahedron whose face 0 is flat on the circle y = 0 at 45°, 63° and 230°: in no open half.
+  Triangulation spread(std::vector<Point>{Point(1, 1, 0), Point(1, 2, 0), Point(-5, -6, 0), Point(1, 0, 1)});
+  spread.assemble({{0, 1, 2}, {1, 0, 3}, {2, 1, 3}, {0, 2, 3}});
+  EXPECT_TRUE(has(spread.validate(), "no open half")) << spread.validate();
+  // a flat face with v∞: a, m, c on a line, and the three infinite faces of its edges
+  Triangulation line(std::vector<Point>{Point::cartesian(0, 0), Point::cartesian(1, 0), Point::cartesian(2, 0)});
+  line.assemble({{0, 1, 2}, {1, 0, inf}, {2, 1, inf}, {0, 2, inf}});
+  EXPECT_TRUE(has(line.validate(), "while v∞ is a vertex")) << line.validate();
 }
 
 }  // namespace

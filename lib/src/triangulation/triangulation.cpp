@@ -9,6 +9,7 @@
 
 #include "t2/lexicographic.hpp"
 #include "t2/orient.hpp"
+#include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 
 namespace t2 {
@@ -170,6 +171,7 @@ std::string Triangulation::validate() const {
   if (v_.size() != n_.size() || v_.size() % 3 != 0) return "arrays of different or non-multiple-of-3 sizes";
   if (dimension_ < 2) return v_.empty() ? "" : "triangles in dimension < 2";
   const Index np = static_cast<Index>(points_.size());
+  const bool has_infinite = std::find(v_.begin(), v_.end(), infinite) != v_.end();
   std::vector<Index> count(points_.size() + 1, 0);  // last: v∞
   for (Index e = 0; e < v_.size(); ++e) {
     const Index v = v_[e], t = e / 3;
@@ -185,8 +187,12 @@ std::string Triangulation::validate() const {
       const Point &a = points_[v_[e]], &b = points_[v_[e + 1]], &c = points_[v_[e + 2]];
       const Sign o = orient(a, b, c);
       const bool antipodal = a == antipode(b) || b == antipode(c) || c == antipode(a);
-      if (o == NEGATIVE || (o == ZERO && !antipodal))
-        return "triangle " + std::to_string(t) + " is not counter-clockwise";
+      if (o == NEGATIVE) return "triangle " + std::to_string(t) + " is not counter-clockwise";
+      // a flat face: no v∞ (no hull), its vertices in an open half of their great circle
+      if (o == ZERO && !antipodal &&
+          (has_infinite || !(inside_arc(a, c, b) || inside_arc(b, a, c) || inside_arc(c, b, a))))
+        return "triangle " + std::to_string(t) + " is flat (orient 0) " +
+               (has_infinite ? "while v∞ is a vertex" : "with its vertices in no open half of their great circle");
     }
   }
   if (count[np] == 0 && std::all_of(points_.begin(), points_.end(), [](const Point& p) { return p.w() > 0; }))

@@ -14,10 +14,12 @@
 ///
 /// **Invariants** (checked by `valid()`, which the tests call after every construction):
 ///  1. Every triangle (a, b, c) with three finite vertices turns counter-clockwise:
-///     orient(a, b, c) > 0 (exact), or — only in a triangulation of T² input (delaunay_t2.hpp) —
-///     orient(a, b, c) = 0 with two of a, b, c antipodal (the degenerate faces of seed 000's
-///     figure 5.18, lunes bounded by two half great circles). Vertex i is opposite the edge
-///     (vertex(t, i+1), vertex(t, i+2)), indices mod 3.
+///     orient(a, b, c) > 0 (exact), or — only in a triangulation of T² input (delaunay_t2.hpp,
+///     triangulate_t2.hpp) — orient(a, b, c) = 0 with two of a, b, c antipodal (the degenerate
+///     faces of seed 000's figure 5.18, lunes bounded by two half great circles), or a *flat*
+///     face (figure 5.19): orient 0, no two antipodal, one vertex strictly inside the arc of
+///     the other two, and no v∞ (flat faces appear only once the hull is gone). Vertex i is
+///     opposite the edge (vertex(t, i+1), vertex(t, i+2)), indices mod 3.
 ///  2. `twin` is an involution without fixed points: twin(twin(e)) = e, and the edge opposite
 ///     e in its triangle has the same endpoints as the edge opposite twin(e), in reverse order.
 ///  3. While dimension() == 2 and the points lie in an open hemisphere (always for front
