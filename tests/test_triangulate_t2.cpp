@@ -139,6 +139,7 @@ void expect_certified(const std::vector<Point>& P, std::size_t samples = 300,
                       InsertionOrder how = InsertionOrder::spatial) {
   const TriangulationT2 r = triangulate_t2(P, how);
   ASSERT_EQ(certify(r), "");
+  EXPECT_EQ(r.tr.validate(), "");  // flat faces and lunes included (triangulation.hpp)
   bool no_hull = false;
   try {
     (void)convex_hull(P);
@@ -188,8 +189,8 @@ TEST(TriangulateT2, RandomSidesAndAntipodes) {
     std::vector<Point> P;
     for (std::size_t k = 0; k < 4 + seed % 9; ++k) {
       const int s = side(rng);
-      P.emplace_back(s == 0 ? 1 : s == 1 ? -1 : 0, c(rng), c(rng) + (s == 2 && k % 2 ? 1 : 0));
-      if (P.back().w() == 0 && P.back().x() == 0 && P.back().y() == 0) P.pop_back();
+      const double w = s == 0 ? 1 : s == 1 ? -1 : 0, x = c(rng), y = c(rng) + (s == 2 && k % 2 ? 1 : 0);
+      if (w != 0 || x != 0 || y != 0) P.emplace_back(w, x, y);  // [0, 0, 0] is no point
     }
     for (std::size_t k = 0; k < P.size(); k += 3) P.push_back(antipode(P[k]));
     SCOPED_TRACE(seed);
@@ -265,6 +266,7 @@ TEST(TriangulateT2, Figure519FlatFace) {
   EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{4, 2, 0}, {4, 1, 2}, {4, 0, 3}, {4, 3, 1}, {0, 2, 3}, {1, 2, 3}}));
   EXPECT_EQ(count_kind(r.tr, FaceKind::lune), 2);
   EXPECT_EQ(count_kind(r.tr, FaceKind::flat), 1);
+  EXPECT_EQ(r.tr.validate(), "");
   expect_tiling(r, queries(400, 6));
 }
 

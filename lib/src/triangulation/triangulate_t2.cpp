@@ -83,16 +83,37 @@ class Builder {
       if (P(tr_.vertex(t, i)) == p) return {Where::vertex, t, i};
     if (kind == FaceKind::proper) {  // one zero: the edge; two: the vertex, handled above
       for (int i = 0; i < 3; ++i)
-        if (s[i] == ZERO) return {Where::edge, t, i};
+        if (s[i] == ZERO) return on_edge(t, i, p);
     }
     // A lune: p on its antipodal edge (one zero), or on its half circle through the third
     // vertex (two zeros), in one of the two arcs.
     for (int i = 0; i < 3; ++i) {
       if (s[i] != ZERO) continue;
       const Point &a = P(tr_.vertex(t, (i + 1) % 3)), &b = P(tr_.vertex(t, (i + 2) % 3));
-      if (a == antipode(b) ? zeros == 1 : inside_arc(a, b, p)) return {Where::edge, t, i};
+      if (a == antipode(b) ? zeros == 1 : inside_arc(a, b, p)) return on_edge(t, i, p);
     }
     throw std::logic_error("triangulate_t2: a point on a lune's boundary and on none of its edges");
+  }
+
+  /// p inside the edge opposite slot i of t — unless p is a vertex hidden inside that edge: the
+  /// middle vertex of a flat face across it, or of a flat face across the edge of that one
+  /// whose arc holds p (flat faces may lie on one another), and so on.
+  Where on_edge(Index t, int i, const Point& p) const {
+    Index f = t;
+    int k = i;
+    for (std::size_t guard = tr_.size(); guard > 0; --guard) {
+      const Index e = tr_.twin(f, k), u = e / 3;
+      const int j = static_cast<int>(e % 3);
+      if (tr_.is_infinite(u) || face_kind(tr_, u) != FaceKind::flat) break;
+      if (P(tr_.vertex(u, j)) == p) return {Where::vertex, u, j};
+      int next = -1;  // the other edge of u whose arc holds p
+      for (int m : {(j + 1) % 3, (j + 2) % 3})
+        if (inside_arc(P(tr_.vertex(u, (m + 1) % 3)), P(tr_.vertex(u, (m + 2) % 3)), p)) next = m;
+      if (next < 0) break;
+      f = u;
+      k = next;
+    }
+    return {Where::edge, t, i};
   }
 
   //> t2-walk
