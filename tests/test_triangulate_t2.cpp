@@ -360,8 +360,12 @@ TEST(TriangulateT2, DuplicatesOfAnAntipodalPair) {
       const Index a = r.lunes[0].z, b = r.lunes[0].nz;
       EXPECT_TRUE(P[a] == antipode(P[b]));
       for (Index v = 0; v < P.size(); ++v) {  // the vertices z and ¬z: the smallest equal indices
-        if (P[v] == P[a]) EXPECT_GE(v, a);
-        if (P[v] == P[b]) EXPECT_GE(v, b);
+        if (P[v] == P[a]) {
+          EXPECT_GE(v, a);
+        }
+        if (P[v] == P[b]) {
+          EXPECT_GE(v, b);
+        }
       }
       expect_tiling(r, queries(100, 9));
     }

@@ -49,9 +49,8 @@
 /// O(n) flips), O(n²) in all, as the seed says, and in input order that is what random input
 /// shows: each walk starts at the previous point, anywhere on the sphere, across the long thin
 /// triangles that insertion without flips leaves. In the spatial order a walk starts next to its
-/// point, the hull test runs only for points outside the hull, and the walks stay short (about
-/// 30 steps a point at 10⁵ points, 50 at 10⁶): 10⁶ points in about 3 s, growing as n^1.2–1.35
-/// (bench/bench_triangulate_t2.cpp).
+/// point, the hull test runs only for points outside the hull, and the walks stay short: 10⁶
+/// points in about 1.2–1.7 s, growing as n^1.1–1.2 (bench/bench_triangulate_t2.cpp).
 ///
 /// **Undefined** (throws `t2::Undefined`, exit status 3 of `t2 triangulate`), naming the points:
 /// all points on one great circle and in no open half of it (no triangle, and the circle is no
