@@ -81,28 +81,37 @@ BENCHMARK_CAPTURE(BM_HullVsCgal, circle, t2::gen::Kind::circle)->Iterations(3)->
 BENCHMARK_CAPTURE(BM_HullVsCgal, disk, t2::gen::Kind::disk)->Iterations(3)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_HullVsCgal, kuzmin, t2::gen::Kind::kuzmin)->Iterations(3)->Unit(benchmark::kMillisecond);
 
-// The trace hook: NoTrace (the default) against a trace that counts the steps. The monotone
-// chain on 10^6 uniform points.
+// The trace hook: NoTrace (the default) against a trace that counts the steps, on 10^6 points:
+// the monotone chain on uniform points, and the merge of the hemisphere hulls on both sides of
+// T² (its negative half's chain goes through a renumbering trace only when a trace listens).
 struct CountingTrace {
   long steps = 0;
   void operator()(t2::HullStep, std::size_t, std::span<const std::size_t>) { ++steps; }
 };
 
-void BM_TraceOff(benchmark::State& state) {
+std::vector<t2::Point> trace_input(t2::gen::Kind k) {
   t2::gen::Options o;
   o.n = 1'000'000;
-  const auto P = t2::gen::points(t2::gen::Kind::uniform, o);
-  for (auto _ : state) benchmark::DoNotOptimize(t2::convex_hull(P, t2::HullAlgorithm::monotone));
+  return t2::gen::points(k, o);
 }
-void BM_TraceCounting(benchmark::State& state) {
-  t2::gen::Options o;
-  o.n = 1'000'000;
-  const auto P = t2::gen::points(t2::gen::Kind::uniform, o);
+
+void BM_TraceOff(benchmark::State& state, t2::gen::Kind k, t2::HullAlgorithm a) {
+  const auto P = trace_input(k);
+  for (auto _ : state) benchmark::DoNotOptimize(t2::convex_hull(P, a));
+}
+void BM_TraceCounting(benchmark::State& state, t2::gen::Kind k, t2::HullAlgorithm a) {
+  const auto P = trace_input(k);
   CountingTrace trace;
-  for (auto _ : state) benchmark::DoNotOptimize(t2::convex_hull(P, t2::HullAlgorithm::monotone, trace));
+  for (auto _ : state) benchmark::DoNotOptimize(t2::convex_hull(P, a, trace));
   state.counters["steps"] = static_cast<double>(trace.steps) / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_TraceOff)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TraceCounting)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TraceOff, monotone, t2::gen::Kind::uniform, t2::HullAlgorithm::monotone)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TraceCounting, monotone, t2::gen::Kind::uniform, t2::HullAlgorithm::monotone)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TraceOff, merge, t2::gen::Kind::both_sides, t2::HullAlgorithm::merge)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TraceCounting, merge, t2::gen::Kind::both_sides, t2::HullAlgorithm::merge)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

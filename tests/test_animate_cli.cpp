@@ -17,10 +17,13 @@ namespace {
 class AnimateCli : public CliTest {
  protected:
   // The points of a generated scene file, and the file.
-  std::vector<Point> generate(const std::string& name, gen::Kind k, std::size_t n, std::uint64_t seed) {
+  // `back`: the share behind (both-sides).
+  std::vector<Point> generate(const std::string& name, gen::Kind k, std::size_t n, std::uint64_t seed,
+                              double back = gen::Options().back) {
     gen::Options o;
     o.n = n;
     o.seed = seed;
+    o.back = back;
     write(name, gen::to_text(k, o));
     return gen::points(k, o);
   }
@@ -84,7 +87,8 @@ std::size_t animated_points() { return testing::scale() == 1 ? 8 : 12; }
 TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
   generate("u.t2", gen::Kind::uniform, animated_points(), 5);
   generate("both.t2", gen::Kind::both_sides, animated_points(), 3);
-  for (const char* file : {"u.t2", "both.t2"})
+  generate("back.t2", gen::Kind::both_sides, animated_points(), 4, 1.0);  // every point behind
+  for (const char* file : {"u.t2", "both.t2", "back.t2"})
     for (const std::string algo : {"jarvis", "graham", "merge-hull"}) {
       const std::string what = algo + " " + file;
       const Result r = t2("animate " + algo + " " + file + " -o out.html");
@@ -96,10 +100,16 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
       ASSERT_EQ(h.status, 0);
       EXPECT_TRUE(same_cycle(numbers(last_step_field(html, "chain")), numbers(h.out)))
           << what << ": " << last_step_field(html, "chain") << " vs " << h.out;
-      // The merge of front points alone merges nothing: its chain is the whole algorithm, shown
-      // at the lecture level (hull_recorder.hpp), and there is no deeper step.
-      const bool one_half = algo == "merge-hull" && std::string(file) == "u.t2";
+      // The merge of the points of one half (front or back) merges nothing: that half's chain is
+      // the whole algorithm, shown at the lecture level (hull_recorder.hpp), and there is no
+      // deeper step; on both sides the lecture level shows the two halves' hulls.
+      const bool merge = algo == "merge-hull", one_half = merge && std::string(file) != "both.t2";
       EXPECT_EQ(has(html, "\"depth\":1"), !one_half) << what << ": debugging steps";
+      EXPECT_EQ(has(html, "The hull of the positive half"), merge && !one_half) << what;
+      EXPECT_EQ(has(html, "The hull of the negative half"), merge && !one_half) << what;
+      if (merge && one_half) {
+        EXPECT_TRUE(has(html, "\"kind\":\"pop\"")) << what << ": the chain's pops";
+      }
     }
 }
 

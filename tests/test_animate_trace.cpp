@@ -122,53 +122,110 @@ TEST(HullRecorder, MergeRecordsTheHullAtItsLastBridge) {
   EXPECT_GT(bridged, 6u);  // the inputs do exercise the merge
 }
 
-// The lecture level of the merge: the positive half's hull, finished, just before the first
-// bridge (checked against Graham's hull of those points alone), then the bridges; when every
-// point is in the positive half, the chain's pushes and pops (nothing is merged).
-TEST(HullRecorder, MergeShowsThePositiveHalfsHullThenTheBridges) {
-  std::size_t halves = 0;
+// Graham's hull (in the plain front chart, an algorithm independent of the merge) of the
+// points P[i] with `side` · w > 0, in input indices: for the back side, Graham's hull of their
+// antipodes (front points), antipodal again, read backwards. Rotated to start at `first`.
+std::vector<std::size_t> graham_of_side(const std::vector<Point>& P, int side, std::size_t first) {
+  std::vector<Point> front;
+  std::vector<std::size_t> index;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (side * sign_of(P[i].w()) > 0) front.push_back(side > 0 ? P[i] : antipode(P[i])), index.push_back(i);
+  std::vector<std::size_t> h;
+  for (std::size_t k : convex_hull(front, HullAlgorithm::graham)) h.push_back(index[k]);
+  if (side < 0) std::reverse(h.begin(), h.end());
+  const auto at = std::find(h.begin(), h.end(), first);
+  if (at != h.end()) std::rotate(h.begin(), at, h.end());
+  return h;
+}
+
+// Exactly counter-clockwise: every three consecutive vertices turn left (Δ > 0), on the points
+// themselves (not their antipodes).
+bool turns_left(const std::vector<Point>& P, const std::vector<std::size_t>& h) {
+  for (std::size_t k = 0; h.size() >= 3 && k < h.size(); ++k)
+    if (orient(P[h[k]], P[h[(k + 1) % h.size()]], P[h[(k + 2) % h.size()]]) <= 0) return false;
+  return true;
+}
+
+// The lecture level of the merge: each half's hull, finished, one after the other just before
+// the first bridge (checked against Graham's hull of that half's points alone), then the
+// bridges; the two monotone chains are debugging steps, the positive half's then the negative
+// half's (its indices are input indices of back points).
+TEST(HullRecorder, MergeShowsBothHalvesThenTheBridges) {
+  std::size_t merged = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const auto P = both_sides(seed);
     Recording rec;
     HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
     merge_hull(std::span<const Point>(P), r);
     const auto& S = rec.steps();
-    const auto half = std::find_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "half"; });
-    const auto bridge = std::find_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "bridge"; });
-    ASSERT_EQ(half == S.end(), bridge == S.end());
-    if (half == S.end()) continue;
-    ++halves;
-    EXPECT_EQ(half + 1, bridge);
-    EXPECT_EQ(std::count_if(S.begin(), S.end(), [](const auto& s) { return s.kind == "half"; }), 1);
-    EXPECT_EQ(half->depth, Depth::lecture);
-    EXPECT_TRUE(half->closed);
-    std::vector<Point> front;  // both-sides: the positive half is the front side
-    std::vector<std::size_t> index;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (P[i].w() > 0) front.push_back(P[i]), index.push_back(i);
-    std::vector<std::size_t> expected;
-    for (std::size_t k : convex_hull(front, HullAlgorithm::graham)) expected.push_back(index[k]);
-    ASSERT_FALSE(half->chain.empty());
-    const auto at = std::find(expected.begin(), expected.end(), half->chain.front());
-    ASSERT_NE(at, expected.end()) << half->text;
-    std::rotate(expected.begin(), at, expected.end());
-    EXPECT_EQ(half->chain, expected) << half->text;
-    for (const auto& s : S) {
-      if (s.kind == "push" || s.kind == "pop") {
-        EXPECT_EQ(s.depth, Depth::debugging);
+    const auto is = [](const char* kind) { return [kind](const trace::Step& s) { return s.kind == kind; }; };
+    ASSERT_EQ(std::count_if(S.begin(), S.end(), is("half")), 2) << "seed " << seed;
+    const auto first = std::find_if(S.begin(), S.end(), is("half"));
+    const auto second = std::find_if(first + 1, S.end(), is("half"));
+    const auto bridge = std::find_if(S.begin(), S.end(), is("bridge"));
+    if (bridge != S.end()) {
+      ++merged;
+      EXPECT_EQ(second + 1, bridge);
+    }
+    for (const auto* h : {&*first, &*second}) {
+      EXPECT_EQ(h->depth, Depth::lecture);
+      EXPECT_TRUE(h->closed);
+      ASSERT_FALSE(h->chain.empty()) << h->text;
+      EXPECT_EQ(h->chain, graham_of_side(P, h == &*first ? 1 : -1, h->chain.front())) << h->text;
+      EXPECT_TRUE(turns_left(P, h->chain)) << h->text;
+    }
+    EXPECT_EQ(second->edges.size(), first->chain.size() > 1 ? first->chain.size() : 0u);  // the first, dashed
+    std::size_t pos_chain = 0, neg_chain = 0;
+    for (auto s = S.begin(); s != S.end(); ++s) {
+      if (s->kind != "push" && s->kind != "pop") continue;
+      EXPECT_EQ(s->depth, Depth::debugging);
+      const bool front = P[s->points.at(0)].w() > 0;
+      EXPECT_EQ(front, s < first) << s->text;  // the positive chain, then the negative one
+      EXPECT_TRUE(s < second) << s->text;
+      ++(front ? pos_chain : neg_chain);
+    }
+    EXPECT_GT(neg_chain, 0u) << "seed " << seed;
+  }
+  EXPECT_GT(merged, 6u);
+}
+
+// Every point in one half: that half's chain is the whole algorithm, shown at the lecture level,
+// and no "half" step repeats the answer. On the front side and on the back side alike; the
+// merge's hull is Graham's hull of the side (independent), and a popped vertex comes back.
+TEST(HullRecorder, MergeOfOneHalfShowsItsChain) {
+  const auto F = make(gen::Kind::uniform, 20, 3);
+  std::vector<Point> back;
+  for (const auto& p : F) back.push_back(antipode(p));
+  const auto& B = back;
+  for (const auto* P : {&F, &B}) {
+    const int side = P == &F ? 1 : -1;
+    Recording rec;
+    HullRecorder r(HullAlgo::merge, *P, lex_chart(), rec);
+    const auto h = merge_hull(std::span<const Point>(*P), r);
+    ASSERT_FALSE(h.empty());
+    EXPECT_EQ(h, graham_of_side(*P, side, h.front()));
+    const auto lecture = rec.at(Depth::lecture);
+    EXPECT_EQ(lecture.size(), rec.size());
+    EXPECT_TRUE(std::none_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "half"; }));
+    std::size_t pops = 0;
+    for (auto s = lecture.begin(); s != lecture.end(); ++s) {
+      ASSERT_TRUE(s->kind == "push" || s->kind == "pop") << s->kind;
+      EXPECT_EQ(s->text.find("negative half") != std::string::npos, side < 0) << s->text;
+      if (s->kind != "pop") continue;
+      ++pops;
+      // A vertex one chain (lower, upper) drops is one of the other: it stays on the stack (the
+      // lower chain is under the upper one there) or is pushed again.
+      const std::size_t i = s->points.at(0);
+      if (std::count(h.begin(), h.end(), i) != 0) {
+        EXPECT_TRUE(std::count(s->chain.begin(), s->chain.end(), i) == 1 ||
+                    std::any_of(s + 1, lecture.end(), [i](const auto& t) { return t.kind == "push" && t.points[0] == i; }))
+            << s->text;
       }
     }
+    EXPECT_GT(pops, 0u);
+    EXPECT_EQ(std::set<std::size_t>(lecture.back().chain.begin(), lecture.back().chain.end()),
+              std::set<std::size_t>(h.begin(), h.end()));  // the chain closes on the hull
   }
-  EXPECT_GT(halves, 6u);
-  // Front points only: the chain is the whole algorithm, shown at the lecture level.
-  const auto P = make(gen::Kind::uniform, 20, 3);
-  Recording rec;
-  HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
-  merge_hull(std::span<const Point>(P), r);
-  const auto lecture = rec.at(Depth::lecture);
-  EXPECT_EQ(lecture.size(), rec.size());
-  EXPECT_TRUE(std::any_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "pop"; }));
-  EXPECT_TRUE(std::none_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "half"; }));
 }
 
 TEST(Recording, LevelsKeepTheOrderAndTheDepth) {

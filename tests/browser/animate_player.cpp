@@ -174,15 +174,19 @@ TEST_F(PlayerInChromium, JarvisEndsWithTheMarchsHull) {
   EXPECT_NE(third.view, fourth.view);
 }
 
-// The merge on both sides of T²: the lecture level's second step is the positive half's hull;
-// the last is merge_hull's answer.
-TEST_F(PlayerInChromium, MergeHullShowsTheHalfThenEndsWithTheMerge) {
+// The merge on both sides of T²: the lecture level's second and third steps are the positive
+// and the negative half's hulls; the last is merge_hull's answer.
+TEST_F(PlayerInChromium, MergeHullShowsBothHalvesThenEndsWithTheMerge) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
   T2_NEEDS_CHROMIUM();
   const auto P = make("merge-hull", gen::Kind::both_sides, 12);
-  const Shown half = load("click=next");
-  EXPECT_EQ(half.pos, 1);
-  EXPECT_TRUE(has(half.explanation, "The hull of the positive half")) << half.explanation;
+  const Shown positive = load("click=next");
+  EXPECT_EQ(positive.pos, 1);
+  EXPECT_TRUE(has(positive.explanation, "The hull of the positive half")) << positive.explanation;
+  const Shown negative = load("click=next,next");
+  EXPECT_EQ(negative.pos, 2);
+  EXPECT_TRUE(has(negative.explanation, "The hull of the negative half")) << negative.explanation;
+  EXPECT_NE(positive.view, negative.view);
   const Shown last = load("step=last");
   EXPECT_EQ(numbers(last.chain), merge_hull(std::span<const Point>(P))) << last.explanation;
   const Shown before = load("step=last&click=prev");

@@ -52,6 +52,7 @@ enum class HullStep {
   pop,       ///< `index` leaves the chain: it is not a hull vertex
   vertex,    ///< `index` is a hull vertex (Jarvis, Quickhull)
   bridge,    ///< the merge joins the hull so far to `index`
+  half,      ///< the merge has the hull of one half: `index` 1 (positive) or 2 (negative), as the chain
 };
 
 /// The trace that records nothing: the default, free.

@@ -22,8 +22,10 @@
 /// polygon of three or more vertices is the intersection of its edges' half-planes.)
 
 #include <algorithm>
+#include <numeric>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "t2/hull/kernel.hpp"
@@ -70,6 +72,29 @@ template <class K>
                        pname(H[k + 1]) + ": no open hemisphere holds the four",
                    {H[0], H[k], H[k + 1], q});
   throw NoHull("no open hemisphere holds the points", H);
+}
+
+// The trace of the chain of ¬A₂, whose indices point into the antipodes: it tells `trace` the
+// input indices (`to[k]` for k). It copies the chain at each step, so it is made only when a
+// trace listens: for NoTrace, `renumbered` is NoTrace again.
+template <class Tr>
+struct Renumbered {
+  Tr& trace;
+  std::span<const std::size_t> to;
+  std::vector<std::size_t> chain;
+  void operator()(HullStep s, std::size_t i, std::span<const std::size_t> c) {
+    chain.clear();
+    for (std::size_t k : c) chain.push_back(to[k]);
+    trace(s, to[i], chain);
+  }
+};
+
+template <class Tr>
+auto renumbered(Tr& trace, std::span<const std::size_t> to) {
+  if constexpr (std::is_same_v<std::remove_const_t<Tr>, NoTrace>)
+    return NoTrace{};
+  else
+    return Renumbered<Tr>{trace, to, {}};
 }
 
 }  // namespace detail
@@ -130,7 +155,9 @@ void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std
 
 /// The hull of P by Algorithms 3 and 4 (the file comment): hulls of the positive and negative
 /// halves in the lexicographic chart, then their merge. The strict vertices, counter-clockwise;
-/// throws `NoHull` when the points lie in no open hemisphere.
+/// throws `NoHull` when the points lie in no open hemisphere. The trace hears the monotone
+/// chain of each half (the negative one on the antipodes, with input indices), each half's
+/// hull (`HullStep::half`, index 1 or 2, the strict vertices counter-clockwise) and the bridges.
 template <class K = ExactKernel, class Tr = NoTrace>
 std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
   //> hull-merge
@@ -148,11 +175,14 @@ std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
     }
   }
   std::vector<std::size_t> H = monotone_chain<K>(P, pos, lex_chart(), trace);  // CH(A₁)
+  trace(HullStep::half, 1, H);
   std::vector<std::size_t> local(neg.size());
-  for (std::size_t k = 0; k < neg.size(); ++k) local[k] = k;
-  std::vector<std::size_t> H2 = monotone_chain<K>(flipped, local, lex_chart());  // CH(¬A₂)
+  std::iota(local.begin(), local.end(), std::size_t{0});
+  std::vector<std::size_t> H2 =  // CH(¬A₂), traced with input indices
+      monotone_chain<K>(flipped, local, lex_chart(), detail::renumbered(trace, neg));
   std::reverse(H2.begin(), H2.end());  // CH(A₂): antipodes, clockwise read backwards
   for (std::size_t& k : H2) k = neg[k];
+  trace(HullStep::half, 2, H2);
   if (H.empty()) return H2;
   for (std::size_t q : H2) insert_into_hull<K>(P, H, q, trace);  // the bridges
   //< hull-merge

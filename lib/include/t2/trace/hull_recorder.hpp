@@ -13,11 +13,11 @@
 /// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step. In the
 /// merge, the monotone chains of the two halves are a sub-algorithm, one level deeper (as
 /// GeoLab's animation depth grows when an algorithm calls another): their pushes and pops are
-/// debugging steps, and the lecture level shows the positive half's finished hull (a step of
-/// its own, "half", recorded before the first bridge) and the bridges. When every point lies in
-/// the positive half there is nothing to merge and the chain is the whole algorithm: its
-/// pushes and pops are then lecture steps. (The merge traces the positive half only: when every
-/// point lies in the negative half, only the answer is recorded.)
+/// debugging steps, and the lecture level shows each half's finished hull (a step "half" each,
+/// told by the merge: first the positive half's, then the negative half's, built on the
+/// antipodes, drawn with the positive one dashed beside it) and then the bridges. When every
+/// point lies in one half there is nothing to merge and that half's chain is the whole
+/// algorithm: its pushes and pops are then lecture steps, and no "half" step repeats the answer.
 
 #include <algorithm>
 #include <cstddef>
@@ -49,10 +49,13 @@ class HullRecorder {
   /// @param chart the chart the algorithm runs in (used to follow Jarvis's candidate)
   /// @param out where the steps go
   HullRecorder(HullAlgo algo, std::span<const Point> P, const Chart& chart, Recording& out)
-      : algo_(algo), P_(P), chart_(chart), out_(out),
-        one_half_(std::all_of(P.begin(), P.end(), [](const Point& p) {  // merge.hpp's split, lexicographic
-          return (p.w() != 0 ? sign_of(p.w()) : p.x() != 0 ? sign_of(p.x()) : sign_of(p.y())) > 0;
-        })) {}
+      : algo_(algo), P_(P), chart_(chart), out_(out) {
+    const auto positive = [](const Point& p) {  // merge.hpp's split, lexicographic
+      return (p.w() != 0 ? sign_of(p.w()) : p.x() != 0 ? sign_of(p.x()) : sign_of(p.y())) > 0;
+    };
+    if (std::all_of(P.begin(), P.end(), positive)) only_ = 1;
+    else if (std::none_of(P.begin(), P.end(), positive)) only_ = 2;
+  }
 
   /// The trace call of hull/kernel.hpp.
   void operator()(HullStep step, std::size_t i, std::span<const std::size_t> chain) {
@@ -62,13 +65,14 @@ class HullRecorder {
       case HullAlgo::graham: graham(step, i, c, "stack", "", Depth::lecture); break;
       case HullAlgo::merge:
         if (step == HullStep::bridge) {
-          if (!bridged_) half();
-          bridged_ = true;
           bridge(i, c);
+        } else if (step == HullStep::half) {
+          half(i, c);
         } else {
-          graham(step, i, c, "chain (positive half)", "Monotone chain of the positive half: ",
-                 one_half_ ? Depth::lecture : Depth::debugging);
-          half_ = out_.back().chain;
+          graham(step, i, c, half_ == 1 ? "chain (positive half)" : "chain (negative half's antipodes)",
+                 half_ == 1 ? "Monotone chain of the positive half: "
+                            : "Monotone chain of the negative half's antipodes: ",
+                 only_ == half_ ? Depth::lecture : Depth::debugging);
         }
         break;
     }
@@ -110,7 +114,8 @@ class HullRecorder {
     } else if (step == HullStep::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
       c.pop_back();
       add("pop", change, prefix + p(i) + " is popped: the chain makes no left turn at " + p(i) +
-          ", so it is no vertex of this hull.", structure, c, {i});
+          ", so it leaves the chain here (the lower and the upper chain are built apart: a point one drops may be "
+          "a vertex of the other).", structure, c, {i});
     } else if (step == HullStep::pop) {
       const std::size_t below = n >= 2 ? c[n - 2] : none;
       const std::size_t next = current_ != none ? current_ : c.front();  // closing: back to the pivot
@@ -161,17 +166,29 @@ class HullRecorder {
     add("consider", Depth::debugging, text, "hull so far", c, {i, cand_}, {{u_, cand_}});
   }
 
-  // The merge: the positive half's hull is done (the chain closes back at its first point).
-  void half() {
-    std::vector<std::size_t> h = half_;
-    if (h.size() > 1 && h.back() == h.front()) h.pop_back();
+  // The merge: the hull of half k (1 positive, 2 negative) is done. When it holds every point
+  // its chain was shown at the lecture level and the answer follows: nothing to add.
+  void half(std::size_t k, const std::vector<std::size_t>& h) {
+    half_ = 2;
+    if (only_ != 0) return;
     std::string list;
     for (std::size_t i : h) list += (list.empty() ? "" : ", ") + p(i);
+    if (list.empty()) list = "no point";
+    if (k == 1) {
+      positive_ = h;
+      add("half", Depth::lecture,
+          "The hull of the positive half (w > 0, then the positive part of Ω) is done: " + list + ".",
+          "hull of the positive half", h, {}, {}, true);
+      return;
+    }
+    std::vector<Edge> dashed;  // the positive half's hull beside it
+    for (std::size_t j = 0; positive_.size() > 1 && j < positive_.size(); ++j)
+      dashed.push_back({positive_[j], positive_[(j + 1) % positive_.size()]});
     add("half", Depth::lecture,
-        "The hull of the positive half (w > 0, then the positive part of Ω) is done: " +
-            (list.empty() ? std::string("no point") : list) +
-            ". The negative half's hull, the monotone chain of its antipodes, now joins it one vertex at a time.",
-        "hull so far", h, {}, {}, true);
+        "The hull of the negative half (w < 0, then the negative part of Ω) is done: " + list +
+            ". It is the monotone chain of the antipodes, antipodal again and read backwards. Its vertices "
+            "now join the positive half's hull (red, dashed) one at a time.",
+        "hull of the negative half", h, {}, dashed, true);
   }
 
   void bridge(std::size_t q, std::vector<std::size_t> kept) {
@@ -192,9 +209,9 @@ class HullRecorder {
   std::size_t u_ = none;        // Jarvis: the last vertex
   std::size_t cand_ = none;     // Jarvis: the current candidate for the next vertex
   bool consistent_ = true;
-  bool one_half_;                   // merge: every point in the positive half (nothing to merge)
-  bool bridged_ = false;            // merge: a bridge was recorded
-  std::vector<std::size_t> half_;   // merge: the positive half's chain so far
+  std::size_t only_ = 0;               // merge: the half (1, 2) holding every point; 0: both
+  std::size_t half_ = 1;               // merge: the half whose chain is running
+  std::vector<std::size_t> positive_;  // merge: the positive half's hull
 };
 
 }  // namespace t2::trace
