@@ -180,6 +180,7 @@ TEST(HullRecorder, MergeShowsBothHalvesThenTheBridges) {
       if (s->kind != "push" && s->kind != "pop") continue;
       EXPECT_EQ(s->depth, Depth::debugging);
       const bool front = P[s->points.at(0)].w() > 0;
+      for (std::size_t k : s->chain) EXPECT_EQ(P[k].w() > 0, front) << s->text;  // one half's chain
       EXPECT_EQ(front, s < first) << s->text;  // the positive chain, then the negative one
       EXPECT_TRUE(s < second) << s->text;
       ++(front ? pos_chain : neg_chain);
@@ -208,9 +209,13 @@ TEST(HullRecorder, MergeOfOneHalfShowsItsChain) {
     EXPECT_EQ(lecture.size(), rec.size());
     EXPECT_TRUE(std::none_of(lecture.begin(), lecture.end(), [](const auto& s) { return s.kind == "half"; }));
     std::size_t pops = 0;
+    std::vector<std::size_t> stack;  // the chain replayed from the pushes and pops alone
     for (auto s = lecture.begin(); s != lecture.end(); ++s) {
       ASSERT_TRUE(s->kind == "push" || s->kind == "pop") << s->kind;
       EXPECT_EQ(s->text.find("negative half") != std::string::npos, side < 0) << s->text;
+      if (s->kind == "push") stack.push_back(s->points.at(0));
+      if (s->kind == "pop" && !stack.empty() && stack.back() == s->points.at(0)) stack.pop_back();
+      EXPECT_EQ(s->chain, stack) << s->text;
       if (s->kind != "pop") continue;
       ++pops;
       // A vertex one chain (lower, upper) drops is one of the other: it stays on the stack (the

@@ -75,7 +75,8 @@ template <class K>
 }
 
 // The trace of the chain of ¬A₂, whose indices point into the antipodes: it tells `trace` the
-// input indices (`to[k]` for k). It copies the chain at each step, so it is made only when a
+// input indices (`to[k]` for k). The monotone chain's stack changes by one push or one pop
+// between two steps, so only its top is renumbered again: O(1) a step. It is made only when a
 // trace listens: for NoTrace, `renumbered` is NoTrace again.
 template <class Tr>
 struct Renumbered {
@@ -83,8 +84,8 @@ struct Renumbered {
   std::span<const std::size_t> to;
   std::vector<std::size_t> chain;
   void operator()(HullStep s, std::size_t i, std::span<const std::size_t> c) {
-    chain.clear();
-    for (std::size_t k : c) chain.push_back(to[k]);
+    chain.resize(c.size());
+    if (!c.empty()) chain.back() = to[c.back()];
     trace(s, to[i], chain);
   }
 };
