@@ -36,11 +36,13 @@ Action setup(CLI::App& app) {
       "debugging: every test as well). The page starts paused at the first step; its URL\n"
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO: jarvis, graham, merge-hull (hulls of points of T2), triangulate (incremental\n"
-      "insertion in spatial order, flips only where the new point sees hull edges), sweep\n"
+      "insertion in spatial order, flips only where the new point sees hull edges; on input\n"
+      "with points behind or on Omega, Algorithm 9 on T2 as t2 triangulate runs it: one step\n"
+      "per point, the faces where it takes the place of v-infinity when the hull goes), sweep\n"
       "(the sweep of t2 triangulate, chapter 09: the points in (x, y) order, each joined to\n"
       "the hull edges it sees; lecture: one step per point, its new fan; debugging: each\n"
       "flip of step 35 too), delaunay (the insertion with Lawson flips: the library's\n"
-      "randomized incremental Delaunay). The triangulations are animated for front points\n"
+      "randomized incremental Delaunay). sweep and delaunay are animated for front points\n"
       "only.");
   app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate, sweep or delaunay")
       ->required()
@@ -53,8 +55,8 @@ Action setup(CLI::App& app) {
   app.add_option("-o,--output", o->out, "the HTML page to write (atomically)")->required()->type_name("OUT");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
-      "points; a triangulation of points off the front side); 3 undefined: the points have\n"
-      "no hull (no open hemisphere holds them).");
+      "points; sweep or delaunay of points off the front side); 3 undefined: the points have\n"
+      "no hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
   return [o] { return animate(*o); };
 }
 

@@ -48,6 +48,9 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
     for (int k = 0; k < 3; ++k) segment(f, P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(kMesh).width(1).layer(0));
   for (const auto& t : s.touched) {  // the triangles in focus
     if (P[t[0]] == P[t[1]] || P[t[1]] == P[t[2]] || P[t[2]] == P[t[0]]) continue;
+    // a lune of T² (two antipodal vertices): no segment between them to fill; its edges show
+    if (P[t[0]] == t2::antipode(P[t[1]]) || P[t[1]] == t2::antipode(P[t[2]]) || P[t[2]] == t2::antipode(P[t[0]]))
+      continue;
     f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
           dr::Style().color(kTouched).width(1.6).fill(kTouched).fill_opacity(0.3).layer(1));
   }

@@ -19,7 +19,9 @@
 #include "t2/trace/hull_recorder.hpp"
 #include "t2/trace/recording.hpp"
 #include "t2/trace/sweep_recorder.hpp"
+#include "t2/trace/triangulate_t2_recorder.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/insert_t2.hpp"
 #include "t2/triangulation/triangulate.hpp"
 
 namespace t2cli::animate {
@@ -93,8 +95,24 @@ void answer(const t2::Triangulation& t, const std::string& what, tr::Recording& 
   rec.add(std::move(s));
 }
 
-// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder.
+// Runs Algorithm 9 on T² (the triangulation of t2 triangulate for input not all in front) with a
+// recorder.
+void triangulate_t2(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  tr::TriangulateT2Recorder r(rec);
+  t2::TriangulationT2 t;
+  try {
+    t = t2::triangulate_t2(std::span<const t2::Point>(P), t2::InsertionOrder::spatial, r);
+  } catch (const t2::Undefined& e) {
+    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
+  }
+  answer(t.tr, "triangulation of T2 (Algorithm 9, t2 triangulate)", rec);
+}
+
+// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder; input
+// not all in front goes to Algorithm 9 on T² for `triangulate`.
 void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  if (plain && !std::all_of(P.begin(), P.end(), [](const t2::Point& p) { return p.w() > 0; }))
+    return triangulate_t2(P, name, rec);
   front_only(P, name, plain ? "triangulate" : "delaunay");
   tr::DelaunayRecorder k(P, rec, plain);
   t2::Triangulation t;

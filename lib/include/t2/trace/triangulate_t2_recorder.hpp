@@ -1,0 +1,173 @@
+#pragma once
+/// @file triangulate_t2_recorder.hpp
+/// @brief A trace for Algorithm 9 on T² (triangulation/insert_t2.hpp) that records its steps as
+/// `Step`s: `t2 animate triangulate` on input with points behind or on Ω.
+///
+/// The hooks see positions in the insertion order; the recorder turns them into input indices
+/// with the order `started` hands it. Depths (seed 003's levels): at the lecture level the first
+/// triangle and then one step per point — in a face, on an edge, merged with an equal vertex,
+/// outside the hull with its new fan, or taking the place of v∞ (the hull gone; with the
+/// antipodal edge z → ¬z when it is the antipode of a hull vertex); at the debugging level also a
+/// point joined to a hull edge it sees, each flip of step 35, each face where the point takes
+/// v∞'s place, and each point that has to wait. Every step holds every finite face so far (lunes
+/// and flat faces included) and the hull so far (closed, counter-clockwise; empty once the hull
+/// is gone), so a player can jump to it, and Euler's formula holds for each.
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "t2/trace/recording.hpp"
+#include "t2/triangulation/insert_t2.hpp"
+#include "t2/triangulation/triangulation.hpp"
+
+namespace t2::trace {
+
+/// A trace of `triangulate_t2` that records its steps (see the file comment).
+class TriangulateT2Recorder {
+ public:
+  using Index = Triangulation::Index;  ///< the triangulation's indices
+
+  /// @param out where the steps go
+  explicit TriangulateT2Recorder(Recording& out) : out_(&out) {}
+  /// Not copied: a copy would split the steps.
+  TriangulateT2Recorder(const TriangulateT2Recorder&) = delete;
+  /// Not copied (see the copy constructor).
+  TriangulateT2Recorder& operator=(const TriangulateT2Recorder&) = delete;
+
+  /// Hook: the first triangle; order[m] is the input index of position m.
+  void started(const Triangulation& tr, std::span<const Index> order) {
+    order_.assign(order.begin(), order.end());
+    Step st = state(tr, "start", Depth::lecture);
+    st.touched = st.triangles;
+    const Tri& f = st.touched.at(0);
+    st.points = {f[0], f[1], f[2]};
+    st.text = "The points go in a spatial order on the sphere (or in input order). The first triangle: " + label(f[0]) +
+              ", " + label(f[1]) + ", " + label(f[2]) + ", with v∞ beyond each of its edges.";
+    out_->add(std::move(st));
+  }
+
+  /// Hook: p is inserted, merged, or waits.
+  void inserted(const Triangulation& tr, Index p, T2Step how) {
+    Step st = state(tr, "insert", Depth::lecture);
+    const std::size_t v = order_[p];
+    st.points = {v};
+    st.touched = fan(tr, p);
+    switch (how) {
+      case T2Step::face: st.text = label(v) + " lies inside a face: it splits it in three."; break;
+      case T2Step::edge:
+        st.text = label(v) + " lies inside an edge: the two faces on it split into four.";
+        break;
+      case T2Step::duplicate: {
+        st.kind = "merge";
+        const auto [d, k] = tr.duplicates().back();
+        st.points = {order_[d], order_[k]};
+        st.text = label(order_[d]) + " equals " + label(order_[k]) + ": one vertex, " + label(order_[k]) + " (the smaller index).";
+        break;
+      }
+      case T2Step::outside:
+        st.text = label(v) + " lies outside the hull and its antipode too, so the hull survives: joined to every hull edge it "
+                  "sees, " + std::to_string(st.touched.size()) + " new triangle" + (st.touched.size() == 1 ? "" : "s") + ".";
+        break;
+      case T2Step::cover:
+        st.text = label(v) + " sees every hull edge: its antipode lies inside the hull. It takes the place of v∞ in every "
+                  "infinite face; the faces now cover the sphere and the hull is gone.";
+        break;
+      case T2Step::antipode:
+        st.text = label(v) + " is the antipode of a hull vertex: it takes the place of v∞, and the two faces at the antipodal "
+                  "edge are lunes, the edge along the bisector of the hull angle (seed 000, figure 5.18).";
+        break;
+      case T2Step::waits:
+        st.kind = "wait";
+        st.depth = Depth::debugging;
+        st.touched.clear();
+        st.text = label(v) + "'s antipode lies inside a hull edge: the face beyond would be bounded by a whole great circle, so " +
+                  label(v) + " waits until the hull is gone.";
+        break;
+    }
+    out_->add(std::move(st));
+  }
+
+  /// Hook: p, outside the hull, is put into the infinite face of a hull edge; t is its finite face.
+  void joined(const Triangulation& tr, Index p, Index t) {
+    Step st = state(tr, "join", Depth::debugging);
+    st.points = {order_[p]};
+    st.touched = {tri(tr, t)};
+    const Tri& f = st.touched[0];
+    st.edges = {{f[0] == order_[p] ? f[1] : f[0], f[2] == order_[p] ? f[1] : f[2]}};
+    st.text = label(order_[p]) + " lies outside the hull and sees the hull edge " + label(st.edges[0][0]) + " " +
+              label(st.edges[0][1]) + ": joined to it. Next, step 35: the hull edges next to it that it also sees.";
+    out_->add(std::move(st));
+  }
+
+  /// Hook: a flip of step 35; t and u are the new triangles.
+  void flipped(const Triangulation& tr, Index t, Index u) {
+    Step st = state(tr, "flip", Depth::debugging);
+    const Index v = tr.vertex(t, 0);
+    st.points = {order_[v]};
+    for (Index x : {t, u})
+      if (!tr.is_infinite(x)) st.touched.push_back(tri(tr, x));
+    st.text = label(order_[v]) + " also sees the next hull edge: step 35 flips it into a triangle at " + label(order_[v]) +
+              ", and the reflex angle there is gone.";
+    out_->add(std::move(st));
+  }
+
+  /// Hook: p has taken v∞'s place in `faces`: one debugging step per face.
+  void replaced(const Triangulation& tr, Index p, std::span<const Index> faces) {
+    std::size_t k = 0;
+    for (Index t : faces) {
+      Step st = state(tr, "replace", Depth::debugging);
+      st.points = {order_[p]};
+      st.touched = {tri(tr, t)};
+      ++k;
+      st.text = "Face " + std::to_string(k) + " of " + std::to_string(faces.size()) + ": " + label(order_[p]) +
+                " takes the place of v∞ in the infinite face of a hull edge, which becomes a finite face.";
+      out_->add(std::move(st));
+    }
+  }
+
+ private:
+  std::string label(std::size_t i) const { return "p" + std::to_string(i); }
+
+  // A face as input indices, rotated so that its smallest index comes first.
+  Tri tri(const Triangulation& tr, Index t) const {
+    Tri x{order_[tr.vertex(t, 0)], order_[tr.vertex(t, 1)], order_[tr.vertex(t, 2)]};
+    std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+    return x;
+  }
+
+  // The finite faces at position v, sorted.
+  std::vector<Tri> fan(const Triangulation& tr, Index v) const {
+    std::vector<Tri> out;
+    for (Index t = 0; t < tr.size(); ++t)
+      if (!tr.is_infinite(t) && tr.slot(t, v) >= 0) out.push_back(tri(tr, t));
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The state after a step: every finite face, sorted, and the hull so far, counter-clockwise.
+  Step state(const Triangulation& tr, const char* kind, Depth d) const {
+    Step st;
+    st.kind = kind;
+    st.depth = d;
+    st.structure = "hull so far";
+    for (Index t = 0; t < tr.size(); ++t)
+      if (!tr.is_infinite(t)) st.triangles.push_back(tri(tr, t));
+    std::sort(st.triangles.begin(), st.triangles.end());
+    std::map<std::size_t, std::size_t> next;
+    for (const auto& [a, b] : tr.hull_edges()) next[order_[a]] = order_[b];
+    for (std::size_t a = next.empty() ? 0 : next.begin()->first; !next.empty() && st.chain.size() < next.size();
+         a = next[a])
+      st.chain.push_back(a);
+    st.closed = true;
+    return st;
+  }
+
+  Recording* out_;
+  std::vector<std::size_t> order_;  // position -> input index
+};
+
+}  // namespace t2::trace
