@@ -25,6 +25,23 @@
 ///
 /// **Comparing distances.** `compare_distance(a, b, c)` decides which of a, b is nearer to c,
 /// in every configuration; see its comment for the rules and for the one undefined case.
+///
+/// **Error bounds on doubles.** Three Cartesian points take the fast path of
+/// distance_double.hpp. Every other case is the sign of a polynomial through `sign_of_poly`,
+/// whose bound filter.hpp derives from the polynomial's shape (u = 2⁻⁵³, Mₚ the largest
+/// |coordinate| of point p, count monomials each meeting at most k roundings, |error| ≤
+/// count·γ_k·Π Mₚ^dₚ, C = count·k·u·(1 + 2⁻⁴⁰)):
+/// - all proper, E = (eₓ² + e_y²)·b_w² − (fₓ² + f_y²)·a_w², eₓ = aₓc_w − cₓa_w, fₓ = bₓc_w − cₓb_w:
+///   each squared difference multiplies out to 2·2 monomials, so 16 in all, of degree 2 in each
+///   of a, b, c; a monomial meets 2 roundings in each of its two factors eₓ, the square, the sum
+///   eₓ² + e_y², the square b_w², their product and the final difference: k = 9, so
+///   |error| ≤ 16γ₉·(M_aM_bM_c)², C = 144u(1 + 2⁻⁴⁰), trusted for M ∈ [2⁻¹⁵⁰, 2¹⁵⁰];
+/// - c on Ω (the sweep), a_w(uₓbₓ + u_yb_y) − b_w(uₓaₓ + u_ya_y): 4 monomials of degree 1 in
+///   each point, k = 4 (product, sum, product, difference): C = 16u(1 + 2⁻⁴⁰);
+/// - the angle rule: the dot products v·c (3 monomials, k = 3, C = 9u(1 + 2⁻⁴⁰)), then
+///   (a·c)²(b·b) − (b·c)²(a·a): 54 monomials of degree 2 in each point, k = 12 (3 in a dot
+///   product, 7 in its square, 3 + 7 + 1 in the product, 1 in the difference): C = 648u(1 + 2⁻⁴⁰).
+/// The test test_filter_bound checks that filter.hpp derives these constants.
 
 #include <string>
 #include <type_traits>

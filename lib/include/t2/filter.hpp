@@ -1,32 +1,63 @@
 #pragma once
 /// @file filter.hpp
-/// @brief Exact signs of polynomial predicates on `double` input: a floating-point filter with
-/// a proven error bound and an exact GMP fallback.
+/// @brief Exact signs of polynomial predicates on `double` input: an error bound derived once
+/// per predicate, at compile time, from the shape of its polynomial; exact stages of
+/// floating-point expansions, GMP only outside their range.
 ///
 /// A predicate is written once as a generic lambda over a number type `N` using only `+`, `-`
-/// and `*`. `filtered_sign(f, a, b, ...)` first evaluates `f` on `Filtered` numbers, which carry
-/// the rounded value `v`, a magnitude `mag` (the same expression evaluated on absolute values
-/// with every `-` read as `+`), the depth `k` of the longest chain of rounded operations and
-/// the degree of the polynomial. By the standard analysis (Higham, *Accuracy and Stability of
-/// Numerical Algorithms*, §3.1) the exact value differs from `v` by at most
-/// γ_k · mag, γ_k = k·u/(1 - k·u), u = 2⁻⁵³, as long as nothing overflows or underflows.
-/// `mag` is itself rounded, and one more u·mag covers underflow (below), so the bound used is
-/// (k + 3)·u·mag (valid for k ≤ 64).
+/// and `*` (`sign_of_poly`). The hot predicates (orient_double.hpp, incircle_double.hpp,
+/// distance_double.hpp) have hand-tuned fast paths; every other predicate goes through this file.
 ///
-/// Overflow and underflow are tamed up front: the filter is trusted only when every nonzero
-/// input lies in [2⁻¹²⁰, 2¹²⁰] and the degree is at most 8. Then every `mag` of a node is 0 or
-/// in [2⁻⁹⁶⁰, 2⁹⁶⁰]: nothing overflows, and a product that underflows (a tiny value left by
-/// cancellation) errs by at most 2⁻¹⁰⁷⁵ ≤ 2⁻¹¹⁵·mag of its node, which is far below u·mag for any
-/// predicate of fewer than 2⁶⁰ operations. Other inputs go to GMP.
+/// **The theorem.** Notation of orient_double.hpp: u = 2⁻⁵³, γ_k = k·u/(1 − k·u). Read the
+/// lambda as a tree and multiply it out without cancelling anything: it becomes a sum of `count`
+/// monomials with coefficient ±1. If every monomial meets at most k roundings on its way to the
+/// result (a sum adds one to each of its operands, a product adds one to the sum of its
+/// factors'), the rounded value v differs from the exact value P by at most γ_k·Σ|m| (Higham,
+/// *Accuracy and Stability of Numerical Algorithms*, §3.1), when nothing overflows or underflows.
+/// The predicates of T² are homogeneous: scaling one point by t > 0 scales P by t^d. If every
+/// monomial has the same degree dᵢ in the coordinates of argument i (*multi-homogeneous*), and
+/// Mᵢ is the largest |coordinate| of argument i, then each |m| ≤ Π Mᵢ^dᵢ, so
 ///
-/// When the bound cannot decide, one more certificate is tried before GMP: if every input is
-/// an integer and `mag` < 2⁵², no operation rounded at all, so `v` is exact — even when it is
-/// zero. Integer grids and their exactly collinear triples never reach GMP. Otherwise `f` is
-/// evaluated again exactly, on `Dyadic` numbers (a GMP integer times a power of two), into
-/// which every double converts exactly; unlike GMP rationals they never compute a gcd.
+///     |v − P| ≤ γ_k · count · Π Mᵢ^dᵢ.
+///
+/// If the degrees per argument differ between monomials but the total degree D is the same in
+/// all (e.g. s² + c² − den² with three numbers as arguments), the same holds with one M, the
+/// largest |coordinate| of all, and M^D.
+///
+/// **Derived once.** `count`, k, the dᵢ and D depend only on the lambda, not on the input: the
+/// filter evaluates the lambda once, at compile time, on `PolyShape` leaves, which carry exactly
+/// these numbers (`derive_bound`). A lambda that is not homogeneous gets no bound (its every call
+/// is decided exactly). For example side(l, p) = W·w + X·x + Y·y (line.hpp) has count 3, k = 3
+/// (a product and two sums), d = (1, 1): |v − P| ≤ 9u/(1 − 3u)·M_l·M_p.
+///
+/// **The bound that runs.** C = count·k·u·(1 + 2⁻⁴⁰), and the code computes fl(C·fl(Π Mᵢ^dᵢ)) with
+/// D roundings, so the computed bound is at least C(1 − u)^D·Π Mᵢ^dᵢ ≥ count·γ_k·Π Mᵢ^dᵢ·(1 + 2⁻⁴²)
+/// as long as k + D ≤ 2¹⁰ (then (1 + 2⁻⁴⁰)(1 − u)^D(1 − ku) ≥ 1 + 2⁻⁴²). The fast path is the
+/// lambda on plain doubles, the maxima and this product: `v > bound` proves P > 0 and
+/// `−v > bound` proves P < 0. An argument whose maximum is 0 while dᵢ > 0 makes every monomial
+/// zero: P = 0, exactly.
+///
+/// **Range.** The bound is trusted only when every Mᵢ (with dᵢ > 0) lies in [2⁻ᴿ, 2ᴿ], R =
+/// ⌊900/D⌋ (one M for a total-degree bound). Then no intermediate value exceeds count·2⁹⁰⁰: no
+/// overflow (count ≤ 2⁶⁰ is required). An operation that underflows errs by at most 2⁻¹⁰⁷⁵
+/// (absolutely; a sum or difference that underflows is exact), and that error reaches the result
+/// multiplied by the rest of its monomials, which are at most count·Π Mᵢ^dᵢ divided by the
+/// maxima of the node's own factors, at least 2^(−R·D) ≥ 2⁻⁹⁰⁰: with at most 2⁶⁰ operations (ops,
+/// counted too) all underflows together err by at most 2⁻¹¹⁵·count·Π Mᵢ^dᵢ, which the margin
+/// 2⁻⁴²·count·γ_k covers.
+///
+/// **Exact stages.** When the bound cannot decide: if every coordinate is an integer below 2⁵²
+/// in magnitude and count·Π Mᵢ^dᵢ ≤ 2⁵², no operation rounded (every node is an integer below
+/// its own count·Π Mᵢ^dᵢ, since Mᵢ ≥ 1), so v is exact, zero included: integer grids and their
+/// exactly collinear triples end here. Else the lambda is evaluated on floating-point expansions
+/// (expansion.hpp), exact when every nonzero |coordinate| lies in [2^(52 − ⌊1074/D⌋), 2ᴿ] (every
+/// component is then a multiple of 2⁻¹⁰⁷⁴ and below 2¹⁰²³) and the expansion's capacity stays
+/// small; else on dyadic GMP numbers (a GMP integer times a power of two), into which every
+/// double converts exactly.
 ///
 /// There are no epsilons: the bound only decides *whether* the fast answer is certain.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -34,40 +65,11 @@
 #include <type_traits>
 #include <utility>
 
+#include "t2/expansion.hpp"
 #include "t2/number.hpp"
 #include "t2/sign.hpp"
 
 namespace t2 {
-
-/// A double with the bookkeeping of the filter (see the file comment).
-struct Filtered {
-  double v = 0;    ///< rounded value
-  double mag = 0;  ///< rounded magnitude: the expression on absolute values
-  int depth = 0;   ///< longest chain of rounded operations
-  int degree = 0;  ///< degree of the polynomial in the inputs
-
-  Filtered() = default;
-  /// An exact leaf (an input coordinate).
-  Filtered(double x) : v(x), mag(std::fabs(x)), degree(1) {}  // NOLINT: implicit on purpose
-
-  /// Sum: one more rounding.
-  friend Filtered operator+(const Filtered& a, const Filtered& b) {
-    return {a.v + b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, std::max(a.degree, b.degree)};
-  }
-  /// Difference: one more rounding.
-  friend Filtered operator-(const Filtered& a, const Filtered& b) {
-    return {a.v - b.v, a.mag + b.mag, std::max(a.depth, b.depth) + 1, std::max(a.degree, b.degree)};
-  }
-  /// Negation: exact.
-  friend Filtered operator-(const Filtered& a) { return {-a.v, a.mag, a.depth, a.degree}; }
-  /// Product: the roundings of both factors plus one.
-  friend Filtered operator*(const Filtered& a, const Filtered& b) {
-    return {a.v * b.v, a.mag * b.mag, a.depth + b.depth + 1, a.degree + b.degree};
-  }
-
- private:
-  Filtered(double v_, double m_, int k_, int d_) : v(v_), mag(m_), depth(k_), degree(d_) {}
-};
 
 /// How often the exact stage ran: counters for the benchmarks and the course's measurements.
 /// They count only in programs built with `T2_FILTER_STATS` defined (see `count_call`).
@@ -113,29 +115,6 @@ inline void count_exact() {
 }
 }  // namespace detail
 //< filter-stats
-
-namespace detail {
-/// True when x is 0 or 2⁻¹²⁰ ≤ |x| ≤ 2¹²⁰ (see the file comment).
-inline bool in_filter_range(double x) {
-  const double a = std::fabs(x);
-  return a == 0 || (a >= 0x1p-120 && a <= 0x1p120);
-}
-/// True when x is an integer of magnitude below 2⁵².
-inline bool small_integer(double x) {
-  return std::fabs(x) < 0x1p52 && x == double(static_cast<std::int64_t>(x));
-}
-}  // namespace detail
-
-/// The sign (-1, 0, +1) that the filter certifies for `r`, or 2 when it cannot decide.
-/// `in_range` says whether every input passed detail::in_filter_range.
-inline int certified_sign(const Filtered& r, bool in_range) {
-  if (!in_range || r.degree > 8 || r.depth > 64) return 2;
-  const double bound = (r.depth + 3) * 0x1p-53 * r.mag;
-  if (r.v > bound) return 1;
-  if (-r.v > bound) return -1;
-  if (r.mag == 0) return 0;  // every monomial is exactly zero
-  return 2;
-}
 
 /// A GMP number whose operators return plain values, so that a generic lambda returning
 /// `a * b - c * d` never holds a dangling gmpxx expression template.
@@ -219,6 +198,11 @@ struct Leaves {
   static bool all(const A& a, F&& test) {
     return test(a);
   }
+  /// The argument's shape with every coordinate `leaf`: what derive_bound passes.
+  template <class N>
+  static constexpr N shape(const N& leaf) {
+    return leaf;
+  }
 };
 //< poly-arguments
 
@@ -239,6 +223,13 @@ struct Leaves<std::array<T, K>> {
     for (const T& v : r)
       if (!test(v)) return false;
     return true;
+  }
+  /// The row's shape with every entry `leaf`.
+  template <class N>
+  static constexpr std::array<N, K> shape(const N& leaf) {
+    std::array<N, K> r{};
+    for (N& v : r) v = leaf;
+    return r;
   }
 };
 
@@ -265,19 +256,187 @@ bool all_leaves(Test&& test, const A&... args) {
 }
 }  // namespace detail
 
-/// The exact sign of `f(args...)` for arguments with finite `double` coordinates (see the file
-/// comment).
-template <class F, class... A>
-Sign filtered_sign(F&& f, const A&... args) {
-  detail::count_call();
-  const Filtered r = detail::apply_leaves(f, [](double v) { return Filtered(v); }, args...);
-  const int s = certified_sign(r, detail::all_leaves([](double v) { return detail::in_filter_range(v); }, args...));
-  if (s != 2) return static_cast<Sign>(s);
-  if (r.mag < 0x1p52 && detail::all_leaves([](double v) { return detail::small_integer(v); }, args...))
-    return sign_of(r.v);  // no rounding
-  detail::count_exact();
-  return sign_of(detail::apply_leaves(f, [](double v) { return Dyadic(v); }, args...));
+namespace detail {
+/// The most arguments a filtered polynomial takes.
+inline constexpr int kMaxPolyArgs = 32;
+
+/// What the filter derives about a polynomial ahead of time (see the file comment): the
+/// lambda evaluated on these instead of numbers, once, at compile time.
+struct PolyShape {
+  double count = 0;  ///< the number of monomials of the tree multiplied out
+  int depth = 0;     ///< the most roundings any monomial meets (k)
+  double ops = 0;    ///< the number of operations of the tree
+  std::array<int, kMaxPolyArgs> degree{};  ///< the degree dᵢ in each argument
+  int total = 0;              ///< the total degree D
+  bool per_argument = true;   ///< every monomial has the degrees `degree`
+  bool homogeneous = true;    ///< every monomial has the total degree `total`
+
+  /// A coordinate of argument i.
+  static constexpr PolyShape leaf(std::size_t i) {
+    PolyShape s;
+    s.count = 1;
+    s.degree[i] = 1;
+    s.total = 1;
+    return s;
+  }
+  /// Sum: one more rounding; the degrees must agree.
+  friend constexpr PolyShape operator+(const PolyShape& a, const PolyShape& b) { return sum(a, b); }
+  /// Difference: as a sum.
+  friend constexpr PolyShape operator-(const PolyShape& a, const PolyShape& b) { return sum(a, b); }
+  /// Negation: exact.
+  friend constexpr PolyShape operator-(const PolyShape& a) { return a; }
+  /// Product: the roundings of both factors plus one; the degrees add.
+  friend constexpr PolyShape operator*(const PolyShape& a, const PolyShape& b) {
+    PolyShape r;
+    r.count = a.count * b.count;
+    r.depth = a.depth + b.depth + 1;
+    r.ops = a.ops + b.ops + 1;
+    for (int i = 0; i < kMaxPolyArgs; ++i) r.degree[i] = a.degree[i] + b.degree[i];
+    r.total = a.total + b.total;
+    r.per_argument = a.per_argument && b.per_argument;
+    r.homogeneous = a.homogeneous && b.homogeneous;
+    return r;
+  }
+
+ private:
+  /// A sum or difference of a and b.
+  static constexpr PolyShape sum(const PolyShape& a, const PolyShape& b) {
+    PolyShape r = a;
+    r.count = a.count + b.count;
+    r.depth = (a.depth > b.depth ? a.depth : b.depth) + 1;
+    r.ops = a.ops + b.ops + 1;
+    r.per_argument = a.per_argument && b.per_argument && a.degree == b.degree;
+    r.homogeneous = a.homogeneous && b.homogeneous && a.total == b.total;
+    return r;
+  }
+};
+
+/// The error bound of a polynomial, derived from its PolyShape (see the file comment).
+struct StaticBound {
+  double c = HUGE_VAL;                     ///< C = count·k·u·(1 + 2⁻⁴⁰); +∞ when there is no bound
+  std::array<int, kMaxPolyArgs> degree{};  ///< the exponent dᵢ of each argument's maximum
+  bool per_argument = false;               ///< false: one maximum M of all, to the power `total`
+  int total = 0;                           ///< the total degree D
+  double count = 0;                        ///< the number of monomials
+  double range = 0;                        ///< 2ᴿ, R = ⌊900/D⌋: the maxima must lie in [1/range, range]
+};
+
+/// Derives the bound of `f` on arguments of types A... by evaluating it on PolyShape leaves.
+template <class... A, class F>
+constexpr StaticBound derive_bound(const F& f) {
+  static_assert(sizeof...(A) <= kMaxPolyArgs, "t2::sign_of_poly: at most 32 arguments");
+  const PolyShape s = [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return f(Leaves<A>::shape(PolyShape::leaf(I))...);
+  }(std::index_sequence_for<A...>{});
+  StaticBound b;
+  b.degree = s.degree;
+  b.per_argument = s.per_argument;
+  b.total = s.total;
+  b.count = s.count;
+  b.range = expansion::pow2(s.total > 0 ? 900 / s.total : 0);
+  if (s.homogeneous && s.total > 0 && s.count <= 0x1p60 && s.ops <= 0x1p60 && s.depth + s.total <= 1024)
+    b.c = s.count * s.depth * 0x1p-53 * (1 + 0x1p-40);
+  return b;
 }
+
+/// The bound of `f`: a compile-time constant when `f` has no captures, else derived on the
+/// first call.
+template <class... A, class F>
+const StaticBound& bound_of(const F& f) {
+  if constexpr (std::is_default_constructible_v<F>) {
+    static constexpr StaticBound b = derive_bound<A...>(F{});
+    static_assert(b.c < HUGE_VAL, "t2::sign_of_poly: the polynomial must be homogeneous (file comment)");
+    return b;
+  } else {
+    static const StaticBound b = derive_bound<A...>(f);
+    return b;
+  }
+}
+
+/// The largest |coordinate| of one argument, each read as a double by `read`.
+template <class A, class Read>
+double max_abs(const A& a, Read read) {
+  double m = 0;
+  Leaves<A>::all(a, [&](const auto& v) {
+    m = std::max(m, std::fabs(read(v)));
+    return true;
+  });
+  return m;
+}
+
+/// What the fast path found: a certified sign (or 2), the rounded value and Π Mᵢ^dᵢ.
+struct StaticFiltered {
+  int sign;      ///< -1, 0, +1, or 2 when not certified
+  double value;  ///< the polynomial in doubles
+  double scale;  ///< Π Mᵢ^dᵢ (or M^D); 0 when a maximum is out of range
+};
+
+/// The fast path of the file comment, on the coordinates read as doubles by `read` (exactly).
+template <class F, class Read, class... A>
+StaticFiltered static_filter(const StaticBound& b, F& f, Read read, const A&... args) {
+  const double v = apply_leaves(f, read, args...);
+  const double m[] = {max_abs(args, read)...};
+  double scale = 1;
+  if (b.per_argument) {
+    for (std::size_t i = 0; i < sizeof...(A); ++i) {
+      if (b.degree[i] == 0) continue;
+      if (m[i] == 0) return {0, v, 0};  // every monomial has a zero factor
+      if (!(m[i] >= 1 / b.range && m[i] <= b.range)) return {2, v, 0};
+      for (int d = 0; d < b.degree[i]; ++d) scale *= m[i];
+    }
+  } else {
+    double mm = 0;
+    for (const double x : m) mm = std::max(mm, x);
+    if (mm == 0) return {0, v, 0};
+    if (!(mm >= 1 / b.range && mm <= b.range)) return {2, v, 0};
+    for (int d = 0; d < b.total; ++d) scale *= mm;
+  }
+  const double bound = b.c * scale;
+  const int sign = (v > bound) - (-v > bound);
+  return {sign != 0 ? sign : 2, v, scale};
+}
+
+/// True when x is an integer of magnitude below 2⁵².
+inline bool small_integer(double x) { return std::fabs(x) < 0x1p52 && x == double(static_cast<std::int64_t>(x)); }
+
+/// The integer certificate of the file comment, given that every coordinate is an integer below
+/// 2⁵²: no operation of the fast path rounded.
+inline bool rounded_nothing(const StaticBound& b, const StaticFiltered& r) {
+  return r.scale > 0 && b.count * r.scale <= 0x1p52;
+}
+
+/// The capacity of an expansion type, 0 for other types.
+template <class E>
+inline constexpr int expansion_capacity = 0;
+/// The capacity of an expansion type.
+template <int N>
+inline constexpr int expansion_capacity<expansion::Expansion<N>> = N;
+
+/// The exact stages of the file comment, after the fast path could not decide.
+template <class F, class... A>
+[[gnu::noinline]] Sign static_filter_exact(const StaticBound& b, F& f, const StaticFiltered& r, const A&... args) {
+  if (rounded_nothing(b, r) && all_leaves([](double v) { return small_integer(v); }, args...))
+    return sign_of(r.value);
+  using E = decltype(apply_leaves(f, [](double x) { return expansion::Expansion<1>(x); }, args...));
+  if constexpr (expansion_capacity<E> > 0 && expansion_capacity<E> <= 2048) {
+    const double lo = std::ldexp(1.0, 52 - 1074 / std::max(b.total, 1)), hi = b.range;
+    if (all_leaves([&](double v) { return v == 0 || (std::fabs(v) >= lo && std::fabs(v) <= hi); }, args...))
+      return apply_leaves(f, [](double x) { return expansion::Expansion<1>(x); }, args...).sign();
+  }
+  return sign_of(apply_leaves(f, [](double v) { return Dyadic(v); }, args...));
+}
+
+/// The exact sign of `f(args...)` for arguments with finite `double` coordinates (file comment).
+template <class F, class... A>
+Sign static_filter_sign(F& f, const A&... args) {
+  count_call();
+  const StaticBound& b = bound_of<A...>(f);
+  const StaticFiltered r = static_filter(b, f, [](double x) { return x; }, args...);
+  if (r.sign != 2) [[likely]] return static_cast<Sign>(r.sign);
+  count_exact();
+  return static_filter_exact(b, f, r, args...);
+}
+}  // namespace detail
 
 /// The sign of `f(args...)` evaluated directly in exact arithmetic (integer coordinates).
 template <class F, class... A>
@@ -286,7 +445,7 @@ Sign exact_sign(F&& f, const A&... args) {
 }
 
 namespace detail {
-/// True when an integer converts to a double exactly and stays in the filter's range.
+/// True when an integer converts to a double exactly and lies below 2⁵².
 inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= 52; }
 }  // namespace detail
 
@@ -296,7 +455,8 @@ inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(),
 /// (`p.w`, `p.x`, `p.y`), a line as a Line3 (`l.W`, `l.X`, `l.Y`), a point of T¹ as a Hom2, a
 /// number as a number. For example the sign of the 2×2 minor wx of two points is
 /// `sign_of_poly([](const auto& p, const auto& q) { return p.w * q.x - p.x * q.w; }, p, q)`.
-/// Filtered for `double` coordinates; for `Integer` coordinates the same filter runs first when
+/// Filtered for `double` coordinates with the bound derived from the shape of `f` (file
+/// comment; `f` must be homogeneous); for `Integer` coordinates the same filter runs first when
 /// every coordinate has at most 52 bits (they convert to doubles exactly, and the filter's
 /// integer certificate often decides), and GMP integers decide the rest. Only calls on
 /// `double` coordinates are counted in filter_stats(). Every coordinate of every argument has
@@ -308,13 +468,13 @@ template <class F, class... A>
 Sign sign_of_poly(F&& f, const A&... args) {
   using T = typename detail::CommonCoordinate<A...>::type;
   if constexpr (std::is_same_v<T, double>) {
-    return filtered_sign(f, args...);
+    return detail::static_filter_sign(f, args...);
   } else {
     if (detail::all_leaves([](const Integer& v) { return detail::fits_filter(v); }, args...)) {
-      const Filtered r = detail::apply_leaves(f, [](const Integer& v) { return Filtered(v.get_d()); }, args...);
-      const int s = certified_sign(r, true);  // 52-bit integers are in the filter's range
-      if (s != 2) return static_cast<Sign>(s);
-      if (r.mag < 0x1p52) return sign_of(r.v);  // integers, no rounding: exact
+      const auto& b = detail::bound_of<A...>(f);
+      const auto r = detail::static_filter(b, f, [](const Integer& v) { return v.get_d(); }, args...);
+      if (r.sign != 2) return static_cast<Sign>(r.sign);
+      if (detail::rounded_nothing(b, r)) return sign_of(r.value);  // integers: exact
     }
     return exact_sign(f, args...);
   }

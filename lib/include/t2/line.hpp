@@ -59,6 +59,11 @@ struct Leaves<BasicLine<T>> {
   static bool all(const BasicLine<T>& l, F&& test) {
     return test(l.W()) && test(l.X()) && test(l.Y());
   }
+  /// The line's shape with every coefficient `leaf` (filter.hpp's derive_bound).
+  template <class N>
+  static constexpr Line3<N> shape(const N& leaf) {
+    return {leaf, leaf, leaf};
+  }
 };
 
 /// Ω, the line at infinity ⟨1, 0, 0⟩, oriented so that the front side is its positive side.
@@ -69,6 +74,12 @@ BasicLine<T> omega() {
 
 /// l ⋄ p: the side of line l on which point p lies (seed 000, §4.3.6). ZERO when p is on l.
 /// Exact for every finite input. Note side(l, ¬p) = -side(l, p).
+///
+/// On doubles the fast path is W·w + X·x + Y·y in plain arithmetic against the bound filter.hpp
+/// derives for it: three monomials of degree 1 in l and in p, each meeting its product and at
+/// most two sums (k = 3), so |fl(v) − v| ≤ 3γ₃·M_l·M_p with M_l, M_p the largest |coefficient| of
+/// l and |coordinate| of p; the code's bound is 9u(1 + 2⁻⁴⁰)·M_l·M_p, trusted for M_l, M_p ∈
+/// [2⁻⁴⁵⁰, 2⁴⁵⁰]. The exact stage is the expansion of the three exact products (filter.hpp).
 template <class T>
 Sign side(const BasicLine<T>& l, const BasicPoint<T>& p) {
   return sign_of_poly([](const auto& m, const auto& q) { return m.W * q.w + m.X * q.x + m.Y * q.y; }, l, p);

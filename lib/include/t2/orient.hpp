@@ -12,9 +12,10 @@
 
 namespace t2 {
 
-/// The 3×3 determinant |p; q; r| of homogeneous coordinates, on any number type.
+/// The 3×3 determinant |p; q; r| of homogeneous coordinates, on any number type (its result
+/// may have another type: an expansion grows with each operation).
 template <class N>
-N det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, const N& g,
+constexpr auto det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, const N& g,
        const N& h, const N& i) {
   return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
 }
@@ -23,7 +24,7 @@ N det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, c
 /// filter.hpp): `sign_of_poly([](const auto& p, const auto& q, const auto& r) { return det3(p, q, r);
 /// }, p, q, r)` is orient(p, q, r).
 template <class N>
-N det3(const Hom3<N>& p, const Hom3<N>& q, const Hom3<N>& r) {
+constexpr auto det3(const Hom3<N>& p, const Hom3<N>& q, const Hom3<N>& r) {
   return det3(p.w, p.x, p.y, q.w, q.x, q.y, r.w, r.x, r.y);
 }
 

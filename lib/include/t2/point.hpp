@@ -77,6 +77,11 @@ struct Leaves<BasicPoint<T>> {
   static bool all(const BasicPoint<T>& p, F&& test) {
     return test(p.w()) && test(p.x()) && test(p.y());
   }
+  /// The point's shape with every coordinate `leaf` (filter.hpp's derive_bound).
+  template <class N>
+  static constexpr Hom3<N> shape(const N& leaf) {
+    return {leaf, leaf, leaf};
+  }
 };
 
 /// The antipode ¬p = [-w, -x, -y]: distinct from p, it coincides with p in the planar model

@@ -55,6 +55,11 @@ struct Leaves<BasicT1<T>> {
   static bool all(const BasicT1<T>& a, F&& test) {
     return test(a.w()) && test(a.x());
   }
+  /// The point's shape with every coordinate `leaf` (filter.hpp's derive_bound).
+  template <class N>
+  static constexpr Hom2<N> shape(const N& leaf) {
+    return {leaf, leaf};
+  }
 };
 
 /// T¹ points with `double` coordinates.
