@@ -1,7 +1,9 @@
-// The kernel's predicates (orient, in_circle, compare_distance, compare_xy) against naive double
-// arithmetic and CGAL 5.5's Exact_predicates_inexact_constructions_kernel (orientation,
-// side_of_oriented_circle, compare_distance_to_point, compare_xy), in one run, on front
-// (Cartesian) points:
+// The kernel's predicates (orient, in_circle, compare_distance, compare_xy, side) against naive
+// double arithmetic and CGAL 5.5's Exact_predicates_inexact_constructions_kernel (orientation,
+// side_of_oriented_circle, compare_distance_to_point, compare_xy, Line_2::oriented_side), in one
+// run, on front (Cartesian) points; then side and compare_distance on homogeneous points (every
+// point [w, w·x, w·y] with its own weight, |w| in [0.5, 2], of either sign), where Epick has no
+// equivalent (its points are Cartesian): against naive double only.
 //   cmake --build --preset default --target bench_kernel && build/default/bin/bench_kernel
 // Prints, per predicate and input, the processor time per call of each (best of 5 passes of 10⁶
 // calls over 2048 inputs)
@@ -16,11 +18,13 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "t2/distance.hpp"
 #include "t2/incircle.hpp"
 #include "t2/lexicographic.hpp"
+#include "t2/line.hpp"
 #include "t2/orient.hpp"
 
 namespace {
@@ -28,8 +32,11 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Quad {
-  t2::Point p[4];
-  K::Point_2 c[4];
+  t2::Point p[4];     // Cartesian (w = 1)
+  K::Point_2 c[4];    // the same for CGAL
+  t2::Line l;         // the line through p[0] and p[1], rounded (W = x₀y₁ − y₀x₁, X = y₀ − y₁, Y = x₁ − x₀)
+  K::Line_2 cl;       // the same line for CGAL: X·x + Y·y + W = 0
+  t2::Point h[4];     // p[i] as [w, w·x, w·y] with a random weight of either sign (rounded)
 };
 
 // The kinds of input of the issue.
@@ -39,17 +46,28 @@ enum Kind { kUniform, kLine, kCircle, kGrid, kBig, kSmall, kEquidistant };
 const char* const kKindNames[] = {"uniform [-1,1]^2", "rounded onto a line", "rounded onto a circle",
                                   "small integer grid", "near 2^60", "near 2^-60", "nearly equidistant"};
 
-Quad make_quad(const double (&xy)[4][2]) {
-  Quad q{{t2::Point(1, 0, 0), t2::Point(1, 0, 0), t2::Point(1, 0, 0), t2::Point(1, 0, 0)}, {}};
+Quad make_quad(const double (&xy)[4][2], std::mt19937_64& rng) {
+  const t2::Point o(1, 0, 0);
+  Quad q{{o, o, o, o}, {}, t2::omega(), {}, {o, o, o, o}};
+  std::uniform_real_distribution<double> wt(0.5, 2);
   for (int i = 0; i < 4; ++i) {
     q.p[i] = t2::Point::cartesian(xy[i][0], xy[i][1]);
     q.c[i] = K::Point_2(xy[i][0], xy[i][1]);
+    const double w = (rng() & 1 ? 1 : -1) * wt(rng);
+    q.h[i] = t2::Point(w, w * xy[i][0], w * xy[i][1]);
+  }
+  const double W = xy[0][0] * xy[1][1] - xy[0][1] * xy[1][0], X = xy[0][1] - xy[1][1], Y = xy[1][0] - xy[0][0];
+  if (W != 0 || X != 0 || Y != 0) {  // else p[0] = p[1]: keep Ω = <1, 0, 0> on both sides
+    q.l = t2::Line(W, X, Y);
+    q.cl = K::Line_2(X, Y, W);
+  } else {
+    q.cl = K::Line_2(0, 0, 1);
   }
   return q;
 }
 
 std::vector<Quad> make_input(Kind kind, std::size_t n) {
-  std::mt19937_64 rng(2026);
+  std::mt19937_64 rng(2026), weights(2027);  // the weights have their own generator
   std::uniform_real_distribution<double> u(-1, 1), t(0, 1), ang(0, 6.283185307179586);
   std::uniform_int_distribution<int> g(0, 15), ulps(-3, 3);
   std::vector<Quad> v;
@@ -85,7 +103,7 @@ std::vector<Quad> make_input(Kind kind, std::size_t n) {
         p[1] = kind == kGrid ? g(rng) : scale * u(rng);
       }
     }
-    const Quad q = make_quad(xy);
+    const Quad q = make_quad(xy, weights);
     // in_circle needs a, b, c not collinear (it throws otherwise); CGAL's answer is then unspecified.
     if (t2::orient(q.p[0], q.p[1], q.p[2]) == t2::ZERO) continue;
     v.push_back(q);
@@ -133,6 +151,36 @@ constexpr auto naive_xy = [](const Quad& q) {
   return (a.y() > b.y()) - (a.y() < b.y());
 };
 
+// side of p[2] against the line l through p[0] and p[1] (on a line input: p[2] within ulps of l).
+constexpr auto naive_side = [](const Quad& q) {
+  const double d = q.l.W() + q.l.X() * q.p[2].x() + q.l.Y() * q.p[2].y();
+  return (d > 0) - (d < 0);
+};
+constexpr auto t2_side = [](const Quad& q) { return static_cast<int>(t2::side(q.l, q.p[2])); };
+constexpr auto cgal_side = [](const Quad& q) { return static_cast<int>(q.cl.oriented_side(q.c[2])); };
+
+// The same on homogeneous points: side(l, h[2]) and compare_distance(h[0], h[1], h[2]).
+constexpr auto naive_side_h = [](const Quad& q) {
+  const t2::Point& p = q.h[2];
+  const double d = q.l.W() * p.w() + q.l.X() * p.x() + q.l.Y() * p.y();
+  return (d > 0) - (d < 0);
+};
+constexpr auto t2_side_h = [](const Quad& q) { return static_cast<int>(t2::side(q.l, q.h[2])); };
+// Naive: the sides of a, b relative to c, then the squared distances scaled by the weights.
+constexpr auto naive_distance_h = [](const Quad& q) {
+  const t2::Point &a = q.h[0], &b = q.h[1], &c = q.h[2];
+  const int ra = (a.w() > 0) == (c.w() > 0), rb = (b.w() > 0) == (c.w() > 0);
+  if (ra != rb) return ra ? -1 : 1;
+  const double ex = a.x() * c.w() - c.x() * a.w(), ey = a.y() * c.w() - c.y() * a.w();
+  const double fx = b.x() * c.w() - c.x() * b.w(), fy = b.y() * c.w() - c.y() * b.w();
+  const double d = (ex * ex + ey * ey) * (b.w() * b.w()) - (fx * fx + fy * fy) * (a.w() * a.w());
+  const int s = (d > 0) - (d < 0);
+  return ra ? s : -s;
+};
+constexpr auto t2_distance_h = [](const Quad& q) {
+  return static_cast<int>(t2::compare_distance(q.h[0], q.h[1], q.h[2]));
+};
+
 constexpr std::size_t kInput = 1 << 11;  // distinct inputs, cycled (they stay in the cache)
 constexpr std::size_t kCalls = 1000000;  // calls per measurement
 
@@ -159,15 +207,20 @@ template <class F>
   return best;
 }
 
-// One row of the table: the three implementations on one input.
+// No CGAL peer: the column stays empty.
+struct NoPeer {};
+
+// One row of the table: the three implementations on one input (two without a CGAL peer).
 template <class N, class T, class C>
 void run_row(const char* name, int k, const std::vector<Quad>& in, long& checksum, N naive, T t2f, C cgal) {
   // The answers must agree with CGAL's everywhere (a free cross-check), and naive's may not.
   std::size_t wrong = 0;
   for (const Quad& q : in) {
-    if (t2f(q) != cgal(q)) {
-      std::fprintf(stderr, "t2 and CGAL disagree on %s, %s\n", name, kKindNames[k]);
-      std::exit(1);
+    if constexpr (!std::is_same_v<C, NoPeer>) {
+      if (t2f(q) != cgal(q)) {
+        std::fprintf(stderr, "t2 and CGAL disagree on %s, %s\n", name, kKindNames[k]);
+        std::exit(1);
+      }
     }
     wrong += naive(q) != t2f(q);
   }
@@ -179,10 +232,15 @@ void run_row(const char* name, int k, const std::vector<Quad>& in, long& checksu
   std::printf("%-10s %-22s exact stage in %7.3f%% of %llu calls\n", name, kKindNames[k],
               100.0 * double(st.exact) / double(st.calls), static_cast<unsigned long long>(st.calls));
 #else
-  const double tn = time_per_call(in, naive, checksum), tt = time_per_call(in, t2f, checksum),
-               tc = time_per_call(in, cgal, checksum);
-  std::printf("%-10s %-22s %9.2f %9.2f %9.2f %9.2f %9.2f %6.2f%%\n", name, kKindNames[k], tn, tt, tc, tt / tn,
-              tt / tc, 100.0 * double(wrong) / double(in.size()));
+  const double tn = time_per_call(in, naive, checksum), tt = time_per_call(in, t2f, checksum);
+  if constexpr (std::is_same_v<C, NoPeer>) {
+    std::printf("%-10s %-22s %9.2f %9.2f %9s %9.2f %9s %6.2f%%\n", name, kKindNames[k], tn, tt, "-", tt / tn, "-",
+                100.0 * double(wrong) / double(in.size()));
+  } else {
+    const double tc = time_per_call(in, cgal, checksum);
+    std::printf("%-10s %-22s %9.2f %9.2f %9.2f %9.2f %9.2f %6.2f%%\n", name, kKindNames[k], tn, tt, tc, tt / tn,
+                tt / tc, 100.0 * double(wrong) / double(in.size()));
+  }
 #endif
 }
 
@@ -198,6 +256,7 @@ int main() {
     const auto in = make_input(static_cast<Kind>(k), kInput);
     if (k == kEquidistant) {
       run_row("distance", k, in, checksum, naive_distance, t2_distance, cgal_distance);
+      run_row("dist hom", k, in, checksum, naive_distance_h, t2_distance_h, NoPeer{});
       continue;
     }
     run_row("orient", k, in, checksum, naive_orient,
@@ -210,6 +269,9 @@ int main() {
             });
     run_row("distance", k, in, checksum, naive_distance,
             t2_distance, cgal_distance);
+    run_row("side", k, in, checksum, naive_side, t2_side, cgal_side);
+    run_row("side hom", k, in, checksum, naive_side_h, t2_side_h, NoPeer{});
+    run_row("dist hom", k, in, checksum, naive_distance_h, t2_distance_h, NoPeer{});
     run_row("xy", k, in, checksum, naive_xy,
             [](const Quad& q) { return static_cast<int>(t2::compare_xy(q.p[0], q.p[1])); },
             [](const Quad& q) { return static_cast<int>(CGAL::compare_xy(q.c[0], q.c[1])); });
