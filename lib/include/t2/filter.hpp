@@ -46,7 +46,17 @@
 /// counted too) all underflows together err by at most 2⁻¹¹⁵·count·Π Mᵢ^dᵢ, which the margin
 /// 2⁻⁴²·count·γ_k covers.
 ///
-/// **Exact stages.** When the bound cannot decide: if every coordinate is an integer below 2⁵²
+/// **A second, semi-static bound.** Π Mᵢ^dᵢ is loose when the coordinates of one argument differ
+/// widely (a far point [1, 2⁶⁰, 2⁶⁰] has M = 2⁶⁰ although its w is 1). When the static bound
+/// cannot decide, the lambda is evaluated once more on pairs (value, magnitude): the magnitude is
+/// the same tree on absolute values with every − read as +, i.e. Σ|m| itself, rounded by at most
+/// k roundings of positive terms, so fl(Σ|m|) ≥ (1 − u)^k·Σ|m|, and fl(C₂·fl(Σ|m|)) with C₂ =
+/// k·u·(1 + 2⁻⁴⁰) is at least γ_k·Σ|m|·(1 + 2⁻⁴²) for k ≤ 2⁹. This stage runs only when every
+/// nonzero |coordinate| lies in [2⁻ᴿ, 2ᴿ]: then a node's magnitude is 0 (and its value exactly
+/// 0) or at least 2⁻⁹⁰⁰, so an underflow's 2⁻¹⁰⁷⁵ is at most 2⁻¹⁷⁵ of the magnitude of its node,
+/// and of Σ|m| once multiplied by the rest of its monomials: far below the margin.
+///
+/// **Exact stages.** When the bounds cannot decide: if every coordinate is an integer below 2⁵²
 /// in magnitude and count·Π Mᵢ^dᵢ ≤ 2⁵², no operation rounded (every node is an integer below
 /// its own count·Π Mᵢ^dᵢ, since Mᵢ ≥ 1), so v is exact, zero included: integer grids and their
 /// exactly collinear triples end here. Else the lambda is evaluated on floating-point expansions
@@ -314,6 +324,7 @@ struct PolyShape {
 /// The error bound of a polynomial, derived from its PolyShape (see the file comment).
 struct StaticBound {
   double c = HUGE_VAL;                     ///< C = count·k·u·(1 + 2⁻⁴⁰); +∞ when there is no bound
+  double c2 = HUGE_VAL;                    ///< C₂ = k·u·(1 + 2⁻⁴⁰) of the semi-static bound
   std::array<int, kMaxPolyArgs> degree{};  ///< the exponent dᵢ of each argument's maximum
   bool per_argument = false;               ///< false: one maximum M of all, to the power `total`
   int total = 0;                           ///< the total degree D
@@ -334,8 +345,10 @@ constexpr StaticBound derive_bound(const F& f) {
   b.total = s.total;
   b.count = s.count;
   b.range = expansion::pow2(s.total > 0 ? 900 / s.total : 0);
-  if (s.homogeneous && s.total > 0 && s.count <= 0x1p60 && s.ops <= 0x1p60 && s.depth + s.total <= 1024)
+  if (s.homogeneous && s.total > 0 && s.count <= 0x1p60 && s.ops <= 0x1p60 && s.depth + s.total <= 512) {
     b.c = s.count * s.depth * 0x1p-53 * (1 + 0x1p-40);
+    b.c2 = s.depth * 0x1p-53 * (1 + 0x1p-40);
+  }
   return b;
 }
 
@@ -405,6 +418,20 @@ inline bool rounded_nothing(const StaticBound& b, const StaticFiltered& r) {
   return r.scale > 0 && b.count * r.scale <= 0x1p52;
 }
 
+/// A double with the magnitude of its expression, for the semi-static bound (file comment).
+struct Magnitude {
+  double v = 0;  ///< the rounded value
+  double m = 0;  ///< the rounded expression on absolute values, every − read as +
+  /// Sum.
+  friend Magnitude operator+(const Magnitude& a, const Magnitude& b) { return {a.v + b.v, a.m + b.m}; }
+  /// Difference.
+  friend Magnitude operator-(const Magnitude& a, const Magnitude& b) { return {a.v - b.v, a.m + b.m}; }
+  /// Negation.
+  friend Magnitude operator-(const Magnitude& a) { return {-a.v, a.m}; }
+  /// Product.
+  friend Magnitude operator*(const Magnitude& a, const Magnitude& b) { return {a.v * b.v, a.m * b.m}; }
+};
+
 /// The capacity of an expansion type, 0 for other types.
 template <class E>
 inline constexpr int expansion_capacity = 0;
@@ -417,10 +444,18 @@ template <class F, class... A>
 [[gnu::noinline]] Sign static_filter_exact(const StaticBound& b, F& f, const StaticFiltered& r, const A&... args) {
   if (rounded_nothing(b, r) && all_leaves([](double v) { return small_integer(v); }, args...))
     return sign_of(r.value);
+  const double lo = 1 / b.range, hi = b.range;
+  const auto in_range = [&](double v) { return v == 0 || (std::fabs(v) >= lo && std::fabs(v) <= hi); };
+  if (b.c2 < HUGE_VAL && all_leaves(in_range, args...)) {  // the semi-static bound
+    const Magnitude e = apply_leaves(f, [](double x) { return Magnitude{x, std::fabs(x)}; }, args...);
+    const double bound = b.c2 * e.m;
+    const int sign = (e.v > bound) - (-e.v > bound);
+    if (sign != 0) return static_cast<Sign>(sign);
+  }
   using E = decltype(apply_leaves(f, [](double x) { return expansion::Expansion<1>(x); }, args...));
   if constexpr (expansion_capacity<E> > 0 && expansion_capacity<E> <= 2048) {
-    const double lo = std::ldexp(1.0, 52 - 1074 / std::max(b.total, 1)), hi = b.range;
-    if (all_leaves([&](double v) { return v == 0 || (std::fabs(v) >= lo && std::fabs(v) <= hi); }, args...))
+    const double elo = std::ldexp(1.0, 52 - 1074 / std::max(b.total, 1));
+    if (all_leaves([&](double v) { return v == 0 || (std::fabs(v) >= elo && std::fabs(v) <= hi); }, args...))
       return apply_leaves(f, [](double x) { return expansion::Expansion<1>(x); }, args...).sign();
   }
   return sign_of(apply_leaves(f, [](double v) { return Dyadic(v); }, args...));

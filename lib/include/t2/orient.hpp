@@ -12,12 +12,19 @@
 
 namespace t2 {
 
-/// The 3×3 determinant |p; q; r| of homogeneous coordinates, on any number type (its result
-/// may have another type: an expansion grows with each operation).
+/// The 3×3 determinant |p; q; r| of homogeneous coordinates, on any number type. The result is
+/// an N when the expression converts to one (for GMP numbers this evaluates the expression
+/// template before its temporaries die); else, for expansions, which grow with each operation,
+/// the expression's own type.
 template <class N>
 constexpr auto det3(const N& a, const N& b, const N& c, const N& d, const N& e, const N& f, const N& g,
        const N& h, const N& i) {
-  return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+  using R = decltype(a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g));
+  if constexpr (std::is_convertible_v<R, N>) {
+    return N(a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g));
+  } else {
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+  }
 }
 
 /// The 3×3 determinant |p; q; r| of three homogeneous triples as the filter passes them (Hom3 of
