@@ -19,9 +19,9 @@
 /// exact products of the exact differences, |det − Δ| ≤ γ₄(|A·D| + |B·C|). The bound is
 /// *semi-static*: it is computed from l and r, which the fast path has anyway. Since
 /// |A·D| ≤ |l|/(1 − u)³ (three roundings made l), γ₄(|A·D| + |B·C|) ≤ γ₄/(1 − u)³ · (|l| + |r|),
-/// and the code's bound fl(fl(C₂·fl(|l| + |r|)) + 2⁻¹⁰⁰⁰) is at least C₂(1 − u)²(|l| + |r|)
-/// + 2⁻¹⁰⁰¹. With C₂ = 4u(1 + 2⁻⁴⁰): C₂(1 − u)² ≥ 4u/((1 − 4u)(1 − u)⁵) ≥ γ₄/(1 − u)³, because
-/// 2⁻⁴⁰ exceeds 9u by far. Underflow breaks the relative model only in the two products and in
+/// and the code's bound fl(fl(C₂·fl(|l| + |r|)) + 2⁻¹⁰⁰⁰), made with three roundings, is at least
+/// C₂(1 − u)³(|l| + |r|) + 2⁻¹⁰⁰¹. With C₂ = 4u(1 + 2⁻⁴⁰): C₂(1 − u)³ ≥ 4u/((1 − 4u)(1 − u)³) =
+/// γ₄/(1 − u)³, because (1 + 2⁻⁴⁰)(1 − u)⁶(1 − 4u) ≥ 1 (2⁻⁴⁰ exceeds 10u by far). Underflow breaks the relative model only in the two products and in
 /// C₂·(|l| + |r|), each by an absolute error of at most 2⁻¹⁰⁷⁵ (a subtraction of doubles that
 /// underflows is exact): the term 2⁻¹⁰⁰⁰ covers them. Overflow gives ±∞ or NaN somewhere in l,
 /// r, det or the bound, and then neither `det > bound` nor `−det > bound` holds: such input goes
