@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <ctime>
 #include <cmath>
 #include <cstdio>
@@ -37,6 +38,26 @@ struct Quad {
   t2::Line l;         // the line through p[0] and p[1], rounded (W = x₀y₁ − y₀x₁, X = y₀ − y₁, Y = x₁ − x₀)
   K::Line_2 cl;       // the same line for CGAL: X·x + Y·y + W = 0
   t2::Point h[4];     // p[i] as [w, w·x, w·y] with a random weight of either sign (rounded)
+};
+
+// The inputs as each implementation reads them: one array per kind of object, as an algorithm
+// holds its points. (One array of Quads made every predicate stride over the others' data, and
+// the timings then depended on the Quad's size: t2's orient went from 2.4 to 2.7 ns when the
+// lines and the weighted points were added.)
+struct Input {
+  std::vector<std::array<t2::Point, 4>> p;
+  std::vector<std::array<K::Point_2, 4>> c;
+  std::vector<t2::Line> l;
+  std::vector<K::Line_2> cl;
+  std::vector<std::array<t2::Point, 4>> h;
+  std::size_t size() const { return p.size(); }
+  void push_back(const Quad& q) {
+    p.push_back({q.p[0], q.p[1], q.p[2], q.p[3]});
+    c.push_back({q.c[0], q.c[1], q.c[2], q.c[3]});
+    l.push_back(q.l);
+    cl.push_back(q.cl);
+    h.push_back({q.h[0], q.h[1], q.h[2], q.h[3]});
+  }
 };
 
 // The kinds of input of the issue.
@@ -66,12 +87,11 @@ Quad make_quad(const double (&xy)[4][2], std::mt19937_64& rng) {
   return q;
 }
 
-std::vector<Quad> make_input(Kind kind, std::size_t n) {
+Input make_input(Kind kind, std::size_t n) {
   std::mt19937_64 rng(2026), weights(2027);  // the weights have their own generator
   std::uniform_real_distribution<double> u(-1, 1), t(0, 1), ang(0, 6.283185307179586);
   std::uniform_int_distribution<int> g(0, 15), ulps(-3, 3);
-  std::vector<Quad> v;
-  v.reserve(n);
+  Input v;
   while (v.size() < n) {
     double xy[4][2];
     if (kind == kLine) {  // four rounded points of the segment pq
@@ -113,62 +133,62 @@ std::vector<Quad> make_input(Kind kind, std::size_t n) {
 
 // Every implementation timed is a lambda, so that the timing loop inlines each one alike (a
 // function pointer would add an indirect call to one side only).
-constexpr auto naive_orient = [](const Quad& q) {
-  const t2::Point &p = q.p[0], &a = q.p[1], &b = q.p[2];
+constexpr auto naive_orient = [](const Input& q, std::size_t i) {
+  const t2::Point &p = q.p[i][0], &a = q.p[i][1], &b = q.p[i][2];
   const double d = (a.x() - p.x()) * (b.y() - p.y()) - (a.y() - p.y()) * (b.x() - p.x());
   return (d > 0) - (d < 0);
 };
 
-constexpr auto naive_incircle = [](const Quad& q) {
-  const double dx = q.p[3].x(), dy = q.p[3].y();
-  const double adx = q.p[0].x() - dx, ady = q.p[0].y() - dy, bdx = q.p[1].x() - dx, bdy = q.p[1].y() - dy,
-               cdx = q.p[2].x() - dx, cdy = q.p[2].y() - dy;
+constexpr auto naive_incircle = [](const Input& q, std::size_t i) {
+  const double dx = q.p[i][3].x(), dy = q.p[i][3].y();
+  const double adx = q.p[i][0].x() - dx, ady = q.p[i][0].y() - dy, bdx = q.p[i][1].x() - dx, bdy = q.p[i][1].y() - dy,
+               cdx = q.p[i][2].x() - dx, cdy = q.p[i][2].y() - dy;
   const double d = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
                    (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
   return (d > 0) - (d < 0);
 };
 
 // Is p[0] nearer to p[2] than p[1] is? The squared distances compared in doubles.
-constexpr auto naive_distance = [](const Quad& q) {
-  const double ax = q.p[0].x() - q.p[2].x(), ay = q.p[0].y() - q.p[2].y(), bx = q.p[1].x() - q.p[2].x(),
-               by = q.p[1].y() - q.p[2].y();
+constexpr auto naive_distance = [](const Input& q, std::size_t i) {
+  const double ax = q.p[i][0].x() - q.p[i][2].x(), ay = q.p[i][0].y() - q.p[i][2].y(), bx = q.p[i][1].x() - q.p[i][2].x(),
+               by = q.p[i][1].y() - q.p[i][2].y();
   const double d = (ax * ax + ay * ay) - (bx * bx + by * by);
   return (d > 0) - (d < 0);
 };
 
 // The same comparison by t2 and by CGAL.
-constexpr auto t2_distance = [](const Quad& q) {
-  return static_cast<int>(t2::compare_distance(q.p[0], q.p[1], q.p[2]));
+constexpr auto t2_distance = [](const Input& q, std::size_t i) {
+  return static_cast<int>(t2::compare_distance(q.p[i][0], q.p[i][1], q.p[i][2]));
 };
-constexpr auto cgal_distance = [](const Quad& q) {
-  return static_cast<int>(CGAL::compare_distance_to_point(q.c[2], q.c[0], q.c[1]));
+constexpr auto cgal_distance = [](const Input& q, std::size_t i) {
+  return static_cast<int>(CGAL::compare_distance_to_point(q.c[i][2], q.c[i][0], q.c[i][1]));
 };
 
 // The lexicographic (x, y) order of p[0] and p[1]: plain comparisons of doubles (exact).
-constexpr auto naive_xy = [](const Quad& q) {
-  const t2::Point &a = q.p[0], &b = q.p[1];
+constexpr auto naive_xy = [](const Input& q, std::size_t i) {
+  const t2::Point &a = q.p[i][0], &b = q.p[i][1];
   if (a.x() != b.x()) return a.x() < b.x() ? -1 : 1;
   return (a.y() > b.y()) - (a.y() < b.y());
 };
 
 // side of p[2] against the line l through p[0] and p[1] (on a line input: p[2] within ulps of l).
-constexpr auto naive_side = [](const Quad& q) {
-  const double d = q.l.W() + q.l.X() * q.p[2].x() + q.l.Y() * q.p[2].y();
+constexpr auto naive_side = [](const Input& q, std::size_t i) {
+  const double d = q.l[i].W() + q.l[i].X() * q.p[i][2].x() + q.l[i].Y() * q.p[i][2].y();
   return (d > 0) - (d < 0);
 };
-constexpr auto t2_side = [](const Quad& q) { return static_cast<int>(t2::side(q.l, q.p[2])); };
-constexpr auto cgal_side = [](const Quad& q) { return static_cast<int>(q.cl.oriented_side(q.c[2])); };
+constexpr auto t2_side = [](const Input& q, std::size_t i) { return static_cast<int>(t2::side(q.l[i], q.p[i][2])); };
+constexpr auto cgal_side = [](const Input& q, std::size_t i) { return static_cast<int>(q.cl[i].oriented_side(q.c[i][2])); };
 
 // The same on homogeneous points: side(l, h[2]) and compare_distance(h[0], h[1], h[2]).
-constexpr auto naive_side_h = [](const Quad& q) {
-  const t2::Point& p = q.h[2];
-  const double d = q.l.W() * p.w() + q.l.X() * p.x() + q.l.Y() * p.y();
+constexpr auto naive_side_h = [](const Input& q, std::size_t i) {
+  const t2::Point& p = q.h[i][2];
+  const double d = q.l[i].W() * p.w() + q.l[i].X() * p.x() + q.l[i].Y() * p.y();
   return (d > 0) - (d < 0);
 };
-constexpr auto t2_side_h = [](const Quad& q) { return static_cast<int>(t2::side(q.l, q.h[2])); };
+constexpr auto t2_side_h = [](const Input& q, std::size_t i) { return static_cast<int>(t2::side(q.l[i], q.h[i][2])); };
 // Naive: the sides of a, b relative to c, then the squared distances scaled by the weights.
-constexpr auto naive_distance_h = [](const Quad& q) {
-  const t2::Point &a = q.h[0], &b = q.h[1], &c = q.h[2];
+constexpr auto naive_distance_h = [](const Input& q, std::size_t i) {
+  const t2::Point &a = q.h[i][0], &b = q.h[i][1], &c = q.h[i][2];
   const int ra = (a.w() > 0) == (c.w() > 0), rb = (b.w() > 0) == (c.w() > 0);
   if (ra != rb) return ra ? -1 : 1;
   const double ex = a.x() * c.w() - c.x() * a.w(), ey = a.y() * c.w() - c.y() * a.w();
@@ -177,8 +197,8 @@ constexpr auto naive_distance_h = [](const Quad& q) {
   const int s = (d > 0) - (d < 0);
   return ra ? s : -s;
 };
-constexpr auto t2_distance_h = [](const Quad& q) {
-  return static_cast<int>(t2::compare_distance(q.h[0], q.h[1], q.h[2]));
+constexpr auto t2_distance_h = [](const Input& q, std::size_t i) {
+  return static_cast<int>(t2::compare_distance(q.h[i][0], q.h[i][1], q.h[i][2]));
 };
 
 constexpr std::size_t kInput = 1 << 11;  // distinct inputs, cycled (they stay in the cache)
@@ -195,12 +215,12 @@ double thread_cpu_ns() {
 // Nanoseconds per call: best of 5 passes of kCalls calls (the minimum is the least disturbed
 // by the other processes of a shared machine).
 template <class F>
-[[gnu::noinline]] double time_per_call(const std::vector<Quad>& in, F f, long& checksum) {
+[[gnu::noinline]] double time_per_call(const Input& in, F f, long& checksum) {
   double best = 1e30;
   for (int pass = 0; pass < 5; ++pass) {
     long sum = 0;
     const double t0 = thread_cpu_ns();
-    for (std::size_t i = 0; i < kCalls; ++i) sum += f(in[i & (kInput - 1)]);
+    for (std::size_t i = 0; i < kCalls; ++i) sum += f(in, i & (kInput - 1));
     best = std::min(best, (thread_cpu_ns() - t0) / kCalls);
     checksum += sum;
   }
@@ -212,23 +232,23 @@ struct NoPeer {};
 
 // One row of the table: the three implementations on one input (two without a CGAL peer).
 template <class N, class T, class C>
-void run_row(const char* name, int k, const std::vector<Quad>& in, long& checksum, N naive, T t2f, C cgal) {
+void run_row(const char* name, int k, const Input& in, long& checksum, N naive, T t2f, C cgal) {
   // The answers must agree with CGAL's everywhere (a free cross-check), and naive's may not.
   std::size_t wrong = 0;
-  for (const Quad& q : in) {
+  for (std::size_t i = 0; i < in.size(); ++i) {
     if constexpr (!std::is_same_v<C, NoPeer>) {
-      if (t2f(q) != cgal(q)) {
+      if (t2f(in, i) != cgal(in, i)) {
         std::fprintf(stderr, "t2 and CGAL disagree on %s, %s\n", name, kKindNames[k]);
         std::exit(1);
       }
     }
-    wrong += naive(q) != t2f(q);
+    wrong += naive(in, i) != t2f(in, i);
   }
 #ifdef T2_FILTER_STATS
   (void)checksum;
   auto& st = t2::filter_stats();
   st.reset();
-  for (const Quad& q : in) (void)t2f(q);
+  for (std::size_t i = 0; i < in.size(); ++i) (void)t2f(in, i);
   std::printf("%-10s %-22s exact stage in %7.3f%% of %llu calls\n", name, kKindNames[k],
               100.0 * double(st.exact) / double(st.calls), static_cast<unsigned long long>(st.calls));
 #else
@@ -260,12 +280,12 @@ int main() {
       continue;
     }
     run_row("orient", k, in, checksum, naive_orient,
-            [](const Quad& q) { return static_cast<int>(t2::orient(q.p[0], q.p[1], q.p[2])); },
-            [](const Quad& q) { return static_cast<int>(CGAL::orientation(q.c[0], q.c[1], q.c[2])); });
+            [](const Input& q, std::size_t i) { return static_cast<int>(t2::orient(q.p[i][0], q.p[i][1], q.p[i][2])); },
+            [](const Input& q, std::size_t i) { return static_cast<int>(CGAL::orientation(q.c[i][0], q.c[i][1], q.c[i][2])); });
     run_row("in_circle", k, in, checksum, naive_incircle,
-            [](const Quad& q) { return static_cast<int>(t2::in_circle(q.p[0], q.p[1], q.p[2], q.p[3])); },
-            [](const Quad& q) {
-              return static_cast<int>(CGAL::side_of_oriented_circle(q.c[0], q.c[1], q.c[2], q.c[3]));
+            [](const Input& q, std::size_t i) { return static_cast<int>(t2::in_circle(q.p[i][0], q.p[i][1], q.p[i][2], q.p[i][3])); },
+            [](const Input& q, std::size_t i) {
+              return static_cast<int>(CGAL::side_of_oriented_circle(q.c[i][0], q.c[i][1], q.c[i][2], q.c[i][3]));
             });
     run_row("distance", k, in, checksum, naive_distance,
             t2_distance, cgal_distance);
@@ -273,8 +293,8 @@ int main() {
     run_row("side hom", k, in, checksum, naive_side_h, t2_side_h, NoPeer{});
     run_row("dist hom", k, in, checksum, naive_distance_h, t2_distance_h, NoPeer{});
     run_row("xy", k, in, checksum, naive_xy,
-            [](const Quad& q) { return static_cast<int>(t2::compare_xy(q.p[0], q.p[1])); },
-            [](const Quad& q) { return static_cast<int>(CGAL::compare_xy(q.c[0], q.c[1])); });
+            [](const Input& q, std::size_t i) { return static_cast<int>(t2::compare_xy(q.p[i][0], q.p[i][1])); },
+            [](const Input& q, std::size_t i) { return static_cast<int>(CGAL::compare_xy(q.c[i][0], q.c[i][1])); });
   }
   std::fprintf(stderr, "(checksum %ld)\n", checksum);
 }
