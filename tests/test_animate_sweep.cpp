@@ -14,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include "animate_testing.hpp"
 #include "cli_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/lexicographic.hpp"
@@ -39,13 +40,6 @@ std::set<std::size_t> boundary(const std::vector<Point>& P, const std::set<std::
       for (std::size_t r : S) left = left && orient(P[p], P[q], P[r]) >= 0;
       if (left) out.insert(p), out.insert(q);
     }
-  return out;
-}
-
-std::vector<trace::Tri> sorted_triangles(const Triangulation& t) {
-  std::vector<trace::Tri> out;
-  for (const auto& f : t.finite_triangles()) out.push_back({f[0], f[1], f[2]});
-  std::sort(out.begin(), out.end());
   return out;
 }
 

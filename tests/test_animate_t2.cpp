@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "animate_testing.hpp"
 #include "cli_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/trace/triangulate_t2_recorder.hpp"
@@ -25,13 +26,6 @@ namespace {
 using trace::Depth;
 using trace::Recording;
 using trace::Step;
-
-std::vector<trace::Tri> sorted_triangles(const Triangulation& t) {
-  std::vector<trace::Tri> out;
-  for (const auto& f : t.finite_triangles()) out.push_back({f[0], f[1], f[2]});
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 std::vector<std::vector<Point>> inputs() {
   std::vector<std::vector<Point>> v;

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "animate_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 #include "t2/trace/delaunay_recorder.hpp"
@@ -20,6 +21,8 @@
 
 namespace t2 {
 namespace {
+
+using t2::testing::sorted_triangles;
 
 using trace::Depth;
 using trace::HullAlgo;
@@ -247,13 +250,6 @@ TEST(Recording, LevelsKeepTheOrderAndTheDepth) {
     if (k < lecture.size() && s.text == lecture[k].text) ++k;
   EXPECT_EQ(k, lecture.size());
   for (const auto& s : lecture) EXPECT_EQ(s.depth, Depth::lecture);
-}
-
-std::vector<trace::Tri> sorted_triangles(const Triangulation& t) {
-  std::vector<trace::Tri> v;
-  for (const auto& f : t.finite_triangles()) v.push_back({f[0], f[1], f[2]});
-  std::sort(v.begin(), v.end());
-  return v;
 }
 
 TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
