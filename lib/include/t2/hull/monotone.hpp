@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "t2/hull/chart_sort.hpp"
@@ -15,23 +16,32 @@ namespace t2 {
 
 namespace detail {
 
-// The chain so far: the indices (what the trace sees) and their points.
+// The chain so far: positions in the sorted points s (8 bytes a vertex: on a circle, where
+// every point is a vertex, a copy of the points would be the largest array), and their input
+// indices only when a trace watches (what it is shown).
 struct Chain {
-  std::vector<std::size_t> idx;
-  std::vector<Point> pts;
+  std::span<const Indexed> s;   // the sorted points
+  std::vector<std::size_t> at;  // the chain: positions in s
+  std::vector<std::size_t> idx;  // the same as input indices, for a trace
+  const Point& point(std::size_t k) const { return s[at[k]].p; }
 };
 
-// One chain of the monotone chain: pops the points that do not turn left, pushes the next.
+// One chain of the monotone chain: pops the points that do not turn left, pushes s[j].
 template <class K, class Tr>
-void chain_step(Chain& h, std::size_t floor, const Indexed& e, Tr& trace) {
-  while (h.pts.size() >= floor + 2 && K::orient(h.pts[h.pts.size() - 2], h.pts.back(), e.p) <= 0) {
-    trace(HullStep::pop, h.idx.back(), h.idx);
-    h.idx.pop_back();
-    h.pts.pop_back();
+void chain_step(Chain& h, std::size_t floor, std::size_t j, Tr& trace) {
+  constexpr bool traced = !std::is_same_v<std::remove_cvref_t<Tr>, NoTrace>;
+  while (h.at.size() >= floor + 2 && K::orient(h.point(h.at.size() - 2), h.point(h.at.size() - 1), h.s[j].p) <= 0) {
+    if constexpr (traced) {
+      trace(HullStep::pop, h.idx.back(), h.idx);
+      h.idx.pop_back();
+    }
+    h.at.pop_back();
   }
-  h.idx.push_back(e.i);
-  h.pts.push_back(e.p);
-  trace(HullStep::push, e.i, h.idx);
+  h.at.push_back(j);
+  if constexpr (traced) {
+    h.idx.push_back(h.s[j].i);
+    trace(HullStep::push, h.s[j].i, h.idx);
+  }
 }
 
 }  // namespace detail
@@ -46,20 +56,23 @@ std::vector<std::size_t> monotone_chain(std::span<const Point> P, std::vector<st
   const ChartOrder<K> order{chart};
   // the points with their indices, sorted by the chart's order, repeats dropped
   const std::vector<detail::Indexed> s = detail::sorted_in_chart<K>(P, idx, order);
-  detail::Chain h;
-  if (s.size() < 3) {  // no point, one point, or a segment
-    for (const auto& e : s) h.idx.push_back(e.i);
-    return h.idx;
+  std::vector<std::size_t>().swap(idx);  // not needed any more: its memory back now
+  detail::Chain h{s, {}, {}};
+  const std::size_t n = s.size();
+  if (n < 3) {  // no point, one point, or a segment
+    for (const auto& e : s) idx.push_back(e.i);
+    return idx;
   }
-  h.idx.reserve(s.size() + 1), h.pts.reserve(s.size() + 1);
-  for (const auto& e : s)
-    detail::chain_step<K>(h, 0, e, trace);  // lower chain, left to right
-  const std::size_t lower = h.idx.size() - 1;  // the upper chain keeps it
-  for (auto it = s.rbegin() + 1; it != s.rend(); ++it)
-    detail::chain_step<K>(h, lower, *it, trace);
-  h.idx.pop_back();  // the first point again
+  h.at.reserve(n + 1);
+  for (std::size_t j = 0; j < n; ++j)
+    detail::chain_step<K>(h, 0, j, trace);  // lower chain, left to right
+  const std::size_t lower = h.at.size() - 1;  // the upper chain keeps it
+  for (std::size_t j = n - 1; j-- > 0;)
+    detail::chain_step<K>(h, lower, j, trace);
+  h.at.pop_back();  // the first point again
+  for (std::size_t& k : h.at) k = s[k].i;  // positions to input indices, in place
   //< hull-monotone
-  return h.idx;
+  return std::move(h.at);
 }
 
 namespace detail {
