@@ -120,9 +120,11 @@ struct KernelRegion {
 // within half a turn, from m's own direction (rank 0: q on m, ahead of v) counter-clockwise to
 // the opposite one (rank 2: q on m, behind v); rank 1 is strictly between, where orient orders
 // them. (For v on Ω, "ahead" is along m's orientation, and two points of Ω strictly left of m
-// are seen in one direction: orient, zero for them, is right to tie them.)
+// are seen in one direction: orient, zero for them, is right to tie them.) Rank -1: q is v or
+// ¬v, which have no direction from v (both on m: compared only there).
 inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& q) {
   if (sign_of(value(m, q)) != 0) return 1;
+  if (q == v || q == antipode(v)) return -1;
   const ExactLine vq = join(v, q);
   return sign_of(vq.W() * m.W() + vq.X() * m.X() + vq.Y() * m.Y()) > 0 ? 0 : 2;
 }
@@ -132,22 +134,23 @@ inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& 
 // or counter-clockwise (turn = +1, their L). R is convex and seen within half a turn, so the
 // directions of its corners rise and fall once along its boundary: a climb to a strictly
 // better neighbour ends at the extreme. The corners v and ¬v have no direction from v: the
-// finger leaves them first (a climb never enters them: orient is zero with them).
+// finger leaves them first (a climb never enters them). The finger's rank is kept, so each
+// step ranks the neighbours only.
 inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std::size_t& f, int turn) {
-  const auto undirected = [&](std::size_t k) { return R.c[k].p == v || R.c[k].p == antipode(v); };
-  for (std::size_t k = 0; undirected(f) && k < R.c.size(); ++k) f = R.c[f].next;
+  int rf = rank_from(v, m, R.c[f].p);
+  for (std::size_t k = 0; rf < 0 && k < R.c.size(); ++k) rf = rank_from(v, m, R.c[f = R.c[f].next].p);
   //> kernel-climb
-  // x is strictly further than f in the sense of turn, as seen from v
-  const auto better = [&](std::size_t x) {
-    if (undirected(x)) return false;
+  // x is strictly further than f in the sense of turn, as seen from v; rx its rank
+  const auto better = [&](std::size_t x, int& rx) {
     const ExactPoint &p = R.c[f].p, &q = R.c[x].p;
-    const int rp = rank_from(v, m, p), rq = rank_from(v, m, q);
-    const int s = rp != rq ? rq - rp : rp == 1 ? static_cast<int>(orient(v, p, q)) : 0;
+    if ((rx = rank_from(v, m, q)) < 0) return false;  // x is v or ¬v
+    const int s = rf != rx ? rx - rf : rf == 1 ? static_cast<int>(orient(v, p, q)) : 0;
     return s * turn > 0;
   };
   for (std::size_t steps = 0; steps <= R.c.size(); ++steps) {
-    if (better(R.c[f].next)) f = R.c[f].next;
-    else if (better(R.c[f].prev)) f = R.c[f].prev;
+    int r = 0;
+    if (better(R.c[f].next, r)) f = R.c[f].next, rf = r;
+    else if (better(R.c[f].prev, r)) f = R.c[f].prev, rf = r;
     else return;
   }
   //< kernel-climb
