@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <set>
+#include <tuple>
 
 #include "t2/gen/generate.hpp"
 #include "t2/gen/random.hpp"
@@ -140,11 +141,27 @@ TEST(Gen, BothSidesHasTheShareBehindAndAnOpenHemisphere) {
 }
 
 TEST(Gen, AntipodalPairsAndPointsAtInfinity) {
-  const auto pts = gen::points(Kind::antipodal, opts(200));
-  std::size_t pairs = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    for (std::size_t j = i + 1; j < pts.size(); ++j) pairs += pts[i] == antipode(pts[j]);
-  EXPECT_GE(pairs, 1u);
+  // A tenth of the points are antipodes of distinct front points: exactly n/10 antipodal pairs
+  // and no two points equal (drawing the antipodes with replacement gave about 28 equal points
+  // at n = 5000).
+  for (std::size_t n : {200u, 5000u}) {
+    auto pts = gen::points(Kind::antipodal, opts(n));
+    ASSERT_EQ(pts.size(), n);
+    std::size_t pairs = 0, back = 0;
+    for (const auto& p : pts) back += p.w() < 0;
+    std::vector<Point> front;
+    for (const auto& p : pts) if (p.w() > 0) front.push_back(p);
+    const auto by_xy = [](const Point& a, const Point& b) { return std::tie(a.x(), a.y()) < std::tie(b.x(), b.y()); };
+    std::sort(front.begin(), front.end(), by_xy);
+    for (const auto& p : pts)
+      if (p.w() < 0) pairs += std::binary_search(front.begin(), front.end(), antipode(p), by_xy);
+    std::sort(pts.begin(), pts.end(), [&](const Point& a, const Point& b) {
+      return std::tie(a.w(), a.x(), a.y()) < std::tie(b.w(), b.x(), b.y());
+    });
+    EXPECT_EQ(std::adjacent_find(pts.begin(), pts.end()), pts.end()) << "equal points, n = " << n;
+    EXPECT_EQ(back, n / 10) << n;
+    EXPECT_EQ(pairs, n / 10) << n;
+  }
   const auto inf = gen::points(Kind::infinity, opts(200));
   EXPECT_EQ(std::count_if(inf.begin(), inf.end(), [](const Point& p) { return p.w() == 0; }), 100);
   for (const auto& p : inf) EXPECT_GT(2 * q(p.w()) + q(p.x()), 0);  // the hemisphere 2w + x > 0

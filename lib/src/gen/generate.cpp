@@ -205,7 +205,13 @@ std::vector<Point> make_points(Kind k, const Options& o) {
         const double x = r.symmetric();
         out.push_back(Point::cartesian(x, r.symmetric()));
       }
-      for (std::size_t i = 0; i < pairs; ++i) out.push_back(antipode(out[r.below(n - pairs)]));
+      // The antipodes of `pairs` distinct front points, drawn without replacement (a partial
+      // Fisher–Yates): drawn with replacement, a point chosen twice gave two equal antipodes.
+      const std::size_t front = n - pairs;
+      for (std::size_t i = 0; i < pairs; ++i) {
+        std::swap(out[i], out[i + r.below(front - i)]);
+        out.push_back(antipode(out[i]));
+      }
       r.shuffle(out);
       break;
     }
