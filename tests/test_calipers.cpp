@@ -182,13 +182,16 @@ TEST(Calipers, DiameterInT2) {
   // Front and back: the farthest pair is the front-back pair nearest as drawn (beyond infinity).
   const std::vector<Point> mixed{Point(1, 0, 0), Point(1, 10, 0), Point(-1, -3, 0), Point(-1, -9, 0)};
   auto d = diameter(mixed);  // drawn: 0, 10 in front; 3, 9 behind: nearest front-back is 10 and 9
+  ASSERT_TRUE(d.has_value());
   EXPECT_EQ(std::minmax(d->first, d->second), std::minmax(std::size_t{1}, std::size_t{3}));
   const std::vector<Point> anti{Point(1, 0, 0), Point(1, 5, 5), Point(-1, -5, -5), Point(-1, -1, 0)};
   d = diameter(anti);  // a point and its antipode: the farthest of all
+  ASSERT_TRUE(d.has_value());
   EXPECT_EQ(std::minmax(d->first, d->second), std::minmax(std::size_t{1}, std::size_t{2}));
   // A point of Omega is +infinity from a proper point; two different ones leave no answer.
   const std::vector<Point> inf{Point(1, 0, 0), Point(1, 5, 5), Point(0, 1, 0), Point(0, 2, 0)};
   d = diameter(inf);
+  ASSERT_TRUE(d.has_value());
   EXPECT_EQ(inf[d->second].w(), 0.0);
   EXPECT_THROW(diameter(std::vector<Point>{Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)}), Undefined);
   // Brute force in rationals for random front-back sets: min over front-back of |A - B|.

@@ -169,7 +169,7 @@ TEST_F(CliDraw, FiguresCheckFindsAChangedMissingOrExtraFigure) {
   fs::create_directories(root / "chapters");
   fs::create_directories(root / "figures");
   fs::copy(source / "chapters" / chapter, root / "chapters" / chapter, fs::copy_options::recursive);
-  for (const std::string folder : {chapter, std::string("gallery")})
+  for (const std::string& folder : {chapter, std::string("gallery")})
     fs::copy(source / "figures" / folder, root / "figures" / folder, fs::copy_options::recursive);
   const Result clean = t2("figures --check --root root");
   ASSERT_EQ(clean.status, 0) << clean.out << clean.err;

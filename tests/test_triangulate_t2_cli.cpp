@@ -43,7 +43,9 @@ TEST_F(TriangulateT2Cli, ExampleAndGeneratedFiles) {
     r = t2(std::string("triangulate pts.t2") + (draw ? " --svg t.svg --model both" : ""));
     ASSERT_EQ(r.status, 0) << kind << r.err;
     EXPECT_EQ(parse(r.out), library((dir_ / "pts.t2").string())) << kind;
-    if (draw) EXPECT_TRUE(has(slurp(dir_ / "t.svg"), "<svg")) << kind;
+    if (draw) {
+      EXPECT_TRUE(has(slurp(dir_ / "t.svg"), "<svg")) << kind;
+    }
   }
 }
 

@@ -35,7 +35,11 @@ namespace t2 {
 
 namespace detail {
 
-inline std::string pname(std::size_t i) { return "p" + std::to_string(i); }
+// (Appended, not "p" + to_string(i): GCC 12 warns -Wrestrict on that, a false positive, GCC bug 105651.)
+inline std::string pname(std::size_t i) {
+  std::string s = "p";
+  return s += std::to_string(i);
+}
 
 // A point of {±[1,0,0], ±[0,1,0], ±[0,0,1]} strictly left of u → v (u ≠ ±v): one exists, since
 // Δ(u, v, e_k) is the k-th coefficient of the line u ∨ v, which is not zero.
