@@ -1,5 +1,5 @@
-// orientation(P) in linear time for homogeneous input: the double filter for weights w ≠ 1
-// (detail::orientation_filter_weighted) must decide ordinary polygons, and the exact fallback
+// orientation(P) in linear time for homogeneous input: the double filter, for any weights
+// (detail::orientation_filter), must decide ordinary polygons, and the exact fallback
 // adds its fractions in pairs (detail::rational_sum). Before both, gen's convex polygons (exact
 // points of the unit circle, w ≠ 1) fell to a left-to-right rational sum whose denominator grows
 // with every term: Θ(n²), and polygon_kernel, which asks orientation(P) first, took 256 s at
@@ -29,17 +29,16 @@ Rational area2(const Polygon& P) {
   return s;
 }
 
-TEST(PolygonOrientation, TheWeightedFilterDecidesConvexCirclePolygons) {
+TEST(PolygonOrientation, TheFilterDecidesConvexCirclePolygons) {
   gen::Options o;
   o.n = 2000;
   o.seed = 5;
   Polygon P = gen::polygon(gen::Kind::convex_polygon, o);
   ASSERT_TRUE(std::any_of(P.begin(), P.end(), [](const Point& p) { return p.w() != 1; }));
-  EXPECT_EQ(detail::orientation_filter(P), ZERO);  // the w = 1 filter cannot
-  EXPECT_EQ(detail::orientation_filter_weighted(P), POSITIVE);
+  EXPECT_EQ(detail::orientation_filter(P), POSITIVE);
   EXPECT_EQ(sign_of(area2(P)), POSITIVE);
   std::reverse(P.begin(), P.end());
-  EXPECT_EQ(detail::orientation_filter_weighted(P), NEGATIVE);
+  EXPECT_EQ(detail::orientation_filter(P), NEGATIVE);
   EXPECT_EQ(orientation(P), NEGATIVE);
 }
 
@@ -55,7 +54,7 @@ TEST(PolygonOrientation, FilterAndExactSumAgreeWithTheOracleOnWeightedPolygons) 
       P.emplace_back(wk, wk * c(rng), wk * c(rng));
     }
     const Sign want = sign_of(area2(P));
-    const Sign f = detail::orientation_filter_weighted(P);
+    const Sign f = detail::orientation_filter(P);
     if (f != ZERO) {
       ++decided;
       ASSERT_EQ(f, want);
@@ -72,7 +71,7 @@ TEST(PolygonOrientation, NearlyFlatWeightedPolygonsGoToTheExactSum) {
   // the filter's bound (about 6 for terms near 2⁵¹), so the pairwise exact sum decides.
   for (double d : {-1.0, 0.0, 1.0}) {
     const Polygon P{Point(3, 0, 0), Point(3, 3 * 0x1p49, 3), Point(3, 3 * (0x1p50 + d), 6)};
-    EXPECT_EQ(detail::orientation_filter_weighted(P), ZERO);
+    EXPECT_EQ(detail::orientation_filter(P), ZERO);
     EXPECT_EQ(area2(P), Rational(-d));
     EXPECT_EQ(orientation(P), sign_of(Rational(-d)));
   }

@@ -118,40 +118,18 @@ AreaOf<T> signed_area(const BasicPolygon<T>& P) {
 
 namespace detail {
 
-/// The sign of twice the signed area of P when every vertex has w = 1 and the double sum
-/// decides it, ZERO otherwise (then the exact sum must). **Proof of the bound.** The sum
-/// S = Σ (a_i − b_i), a_i = x_i y_{i+1}, b_i = y_i x_{i+1}, is computed left to right: each
-/// product and difference rounds once, each partial sum once more, so every term carries at
-/// most n + 1 relative roundings of u = 2⁻⁵³ and |Ŝ − S| ≤ γ_{n+1} T, T = Σ (|a_i| + |b_i|),
-/// γ_k = k u / (1 − k u) (Higham, Accuracy and Stability, §4.2), plus 2 n 2⁻¹⁰⁷⁴ for products
-/// that underflow. T is itself computed in doubles (at most 2n + 1 roundings), so
-/// (2 n + 4) u T̂ + n 2⁻¹⁰⁷² bounds the error for n < 2⁴⁰; an overflow leaves no decision.
-inline Sign orientation_filter(const BasicPolygon<double>& P) {
-  const std::size_t n = P.size();
-  double S = 0, T = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& p = P[i];
-    const auto& q = P[(i + 1) % n];
-    if (p.w() != 1) return ZERO;
-    const double a = p.x() * q.y(), b = p.y() * q.x();
-    S += a - b;
-    T += std::fabs(a) + std::fabs(b);
-  }
-  const double nd = static_cast<double>(n), u = 0x1p-53;
-  const double bound = (2 * nd + 4) * u * T + nd * 0x1p-1072;
-  if (!std::isfinite(S) || !std::isfinite(bound) || n >= (std::size_t{1} << 40)) return ZERO;
-  return S > bound ? POSITIVE : S < -bound ? NEGATIVE : ZERO;
-}
-
-/// The same sign for any weights w ≠ 0 of one sign (the caller checks that), when every
-/// coordinate is 0 or has magnitude in [2⁻²⁰⁰, 2²⁰⁰], ZERO otherwise. **Proof of the bound.**
-/// The term tᵢ = (aᵢ − bᵢ)/(wᵢwᵢ₊₁), aᵢ = xᵢyᵢ₊₁, bᵢ = yᵢxᵢ₊₁, is computed with four roundings
-/// (the two products, the difference, the product of the weights, the quotient: each relative,
+/// The sign of twice the signed area of P, for weights w ≠ 0 of one sign (the caller checks
+/// that), when the double sum decides it and every coordinate is 0 or has magnitude in
+/// [2⁻²⁰⁰, 2²⁰⁰]; ZERO otherwise (then the exact sum must). **Proof of the bound.**
+/// The term tᵢ = (aᵢ − bᵢ)/(wᵢwᵢ₊₁), aᵢ = xᵢyᵢ₊₁, bᵢ = yᵢxᵢ₊₁, puts at most four roundings on
+/// each of its two monomials (its product, the difference, the product of the weights, the
+/// quotient; γ₅ below is one more than needed. Each rounding is relative:
 /// none underflows in that range: a nonzero aᵢ − bᵢ is at least 2⁻⁴⁵², the quotient at least
 /// 2⁻⁸⁵², and nothing overflows), so |t̂ᵢ − tᵢ| ≤ γ₅ Tᵢ, Tᵢ = (|aᵢ| + |bᵢ|)/|wᵢwᵢ₊₁|; the sum
 /// adds n − 1 roundings more, so |Ŝ − S| ≤ γ_{n+4} Σ Tᵢ. T̂ = Σ T̂ᵢ carries at most n + 4
-/// roundings too, so (2 n + 10) u T̂ bounds the error for n < 2⁴⁰.
-inline Sign orientation_filter_weighted(const BasicPolygon<double>& P) {
+/// roundings too, so (2 n + 10) u T̂ bounds the error for n < 2⁴⁰. (With w = 1 the product of
+/// the weights and the quotient are exact, and the bound is merely a little loose.)
+inline Sign orientation_filter(const BasicPolygon<double>& P) {
   const auto in_range = [](double c) {
     const double a = std::fabs(c);
     return a == 0 || (a >= 0x1p-200 && a <= 0x1p200);
@@ -176,15 +154,13 @@ inline Sign orientation_filter_weighted(const BasicPolygon<double>& P) {
 
 /// The exact sign of `signed_area(P)`: POSITIVE for a counter-clockwise front polygon (its
 /// positive side is then its bounded interior). Computed in rationals, so exact for `double`
-/// input too, after a double filter (`detail::orientation_filter` when every w is 1,
-/// `detail::orientation_filter_weighted` otherwise); the exact sum is added in pairs
-/// (`detail::rational_sum`). Same preconditions as `signed_area`.
+/// input too, after a double filter (`detail::orientation_filter`); the exact sum is added in
+/// pairs (`detail::rational_sum`). Same preconditions as `signed_area`.
 template <class T>
 Sign orientation(const BasicPolygon<T>& P) {
   const Side s = common_side(P, "orientation(P)");
   if constexpr (std::is_same_v<T, double>) {
-    Sign f = detail::orientation_filter(P);
-    if (f == ZERO) f = detail::orientation_filter_weighted(P);
+    const Sign f = detail::orientation_filter(P);
     if (f != ZERO) return s == Side::back ? -f : f;
   }
   const std::size_t n = P.size();
