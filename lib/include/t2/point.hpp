@@ -145,6 +145,13 @@ Point normalized(const Point& p);
 /// Cartesian coordinates (x/w, y/w) of a proper point; `std::nullopt` on Ω.
 std::optional<std::pair<double, double>> to_cartesian(const Point& p);
 
+/// The name of point i of a list (0-based, in file order), as messages and animations print
+/// it: "p3".
+inline std::string point_name(std::size_t i) {
+  std::string s = "p";  // appended: "p" + to_string(i) draws GCC 12's false -Wrestrict (bug 105651)
+  return s += std::to_string(i);
+}
+
 /// "[w, x, y]" with shortest round-trip numbers.
 std::string to_string(const Point& p);
 /// "[w, x, y]" with all digits.

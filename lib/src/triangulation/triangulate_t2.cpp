@@ -42,9 +42,7 @@ Sign side_of_edge(const Triangulation& tr, std::span<const AntipodalEdge> lunes,
 
 namespace {
 
-std::string point_name(std::span<const Point> input, Index k) {
-  return "p" + std::to_string(k) + " = " + to_string(input[k]);
-}
+std::string named(std::span<const Point> input, Index k) { return point_name(k) + " = " + to_string(input[k]); }
 
 }  // namespace
 

@@ -35,12 +35,6 @@ namespace t2 {
 
 namespace detail {
 
-// (Appended, not "p" + to_string(i): GCC 12 warns -Wrestrict on that, a false positive, GCC bug 105651.)
-inline std::string pname(std::size_t i) {
-  std::string s = "p";
-  return s += std::to_string(i);
-}
-
 // A point of {±[1,0,0], ±[0,1,0], ±[0,0,1]} strictly left of u → v (u ≠ ±v): one exists, since
 // Δ(u, v, e_k) is the k-th coefficient of the line u ∨ v, which is not zero.
 template <class K>
@@ -59,21 +53,21 @@ template <class K>
   const Point nq = antipode(P[q]);
   for (std::size_t v : H)
     if (K::equal(P[v], nq))
-      throw NoHull(pname(v) + " and " + pname(q) + " are antipodal: no open hemisphere holds both", {v, q});
+      throw NoHull(point_name(v) + " and " + point_name(q) + " are antipodal: no open hemisphere holds both", {v, q});
   const std::size_t m = H.size();
   for (std::size_t i = 0; i < m && m >= 3; ++i)
     if (K::orient(P[H[i]], P[H[(i + 1) % m]], nq) == ZERO)
-      throw NoHull("the antipode of " + pname(q) + " lies on the segment " + pname(H[i]) + " " +
-                       pname(H[(i + 1) % m]) + ": no open hemisphere holds the three",
+      throw NoHull("the antipode of " + point_name(q) + " lies on the segment " + point_name(H[i]) + " " +
+                       point_name(H[(i + 1) % m]) + ": no open hemisphere holds the three",
                    {H[i], H[(i + 1) % m], q});
   if (m == 2)
-    throw NoHull("the antipode of " + pname(q) + " lies on the segment " + pname(H[0]) + " " + pname(H[1]) +
+    throw NoHull("the antipode of " + point_name(q) + " lies on the segment " + point_name(H[0]) + " " + point_name(H[1]) +
                      ": no open hemisphere holds the three",
                  {H[0], H[1], q});
   for (std::size_t k = 1; k + 1 < m; ++k)  // the fan triangle h0 h_k h_{k+1} that holds ¬q
     if (K::orient(P[H[0]], P[H[k]], nq) >= 0 && K::orient(P[H[0]], P[H[k + 1]], nq) <= 0)
-      throw NoHull("the antipode of " + pname(q) + " lies in the triangle " + pname(H[0]) + " " + pname(H[k]) + " " +
-                       pname(H[k + 1]) + ": no open hemisphere holds the four",
+      throw NoHull("the antipode of " + point_name(q) + " lies in the triangle " + point_name(H[0]) + " " + point_name(H[k]) + " " +
+                       point_name(H[k + 1]) + ": no open hemisphere holds the four",
                    {H[0], H[k], H[k + 1], q});
   throw NoHull("no open hemisphere holds the points", H);
 }

@@ -52,8 +52,8 @@ class SweepRecorder {
       const Tri f = st.triangles.at(0);
       st.touched = {f};
       st.points = {v, f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]};
-      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + p(f[0]) + ", " + p(f[1]) + ", " +
-                p(f[2]) + " (" + p(v) + " is the first point off the line of the smallest two).";
+      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + point_name(f[0]) + ", " + point_name(f[1]) + ", " +
+                point_name(f[2]) + " (" + point_name(v) + " is the first point off the line of the smallest two).";
       out_->add(std::move(st));
       return;
     }
@@ -62,15 +62,15 @@ class SweepRecorder {
     st.touched = fan(tr, v);
     if (t2::compare_xy(input_[v], input_[third_]) < 0) {
       st.depth = Depth::lecture;  // a point on the first edge: joined to both triangles, no flip
-      st.text = p(v) + " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
+      st.text = point_name(v) + " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
                 "on it, in two.";
       out_->add(std::move(st));
       return;
     }
     const Tri& t = st.touched.at(0);
     st.edges = {{t[0] == v ? t[1] : t[0], t[2] == v ? t[1] : t[2]}};
-    st.text = p(v) + ", the next point in (x, y) order, lies outside the hull of the points before it and sees the hull "
-              "edge " + p(st.edges[0][0]) + " " + p(st.edges[0][1]) + " at the last point: joined to it, one triangle. "
+    st.text = point_name(v) + ", the next point in (x, y) order, lies outside the hull of the points before it and sees the hull "
+              "edge " + point_name(st.edges[0][0]) + " " + point_name(st.edges[0][1]) + " at the last point: joined to it, one triangle. "
               "Next, step 35: the hull edges next to it that it also sees.";
     out_->add(std::move(st));
     flips_ = 0;
@@ -87,9 +87,9 @@ class SweepRecorder {
     if (st.touched.size() == 1) {
       const Tri& f = st.touched[0];
       st.edges = {{f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]}};
-      st.text = p(v) + " also sees the hull edge " + p(st.edges[0][0]) + " " + p(st.edges[0][1]) +
-                " from outside too: step 35 flips it into the triangle " + p(f[0]) + " " + p(f[1]) + " " +
-                p(f[2]) + ", and the reflex angle at " + p(v) + " is gone.";
+      st.text = point_name(v) + " also sees the hull edge " + point_name(st.edges[0][0]) + " " + point_name(st.edges[0][1]) +
+                " from outside too: step 35 flips it into the triangle " + point_name(f[0]) + " " + point_name(f[1]) + " " +
+                point_name(f[2]) + ", and the reflex angle at " + point_name(v) + " is gone.";
     }
     out_->add(std::move(st));
     ++flips_;
@@ -101,7 +101,7 @@ class SweepRecorder {
   void finish() {
     if (pending_.kind.empty()) return;
     const std::size_t n = pending_.touched.size();
-    pending_.text = p(pending_.points.at(0)) + " is a hull vertex now; its fan: " + std::to_string(n) +
+    pending_.text = point_name(pending_.points.at(0)) + " is a hull vertex now; its fan: " + std::to_string(n) +
                     " new triangle" + (n == 1 ? "" : "s") + " (" + std::to_string(flips_) + " hull edge" +
                     (flips_ == 1 ? "" : "s") + " flipped away by step 35).";
     out_->add(std::move(pending_));
@@ -109,7 +109,6 @@ class SweepRecorder {
   }
 
  private:
-  static std::string p(std::size_t i) { return "p" + std::to_string(i); }
 
   static Tri tri(const Triangulation& tr, Index t) {
     Tri x{tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)};
