@@ -54,22 +54,23 @@ void detail::collinear_t2(std::span<const Point> input, Triangulation& tr, bool 
                                 "triangle and no hull has them as vertices: ") + e.what());
   }
   std::vector<Index> s(input.size());
-  for (Index k = 0; k < s.size(); ++k) s[k] = k;
+  std::iota(s.begin(), s.end(), Index(0));
   std::stable_sort(s.begin(), s.end(), [&](Index a, Index b) {
     return compare_lexicographic(input[a], input[b]) == NEGATIVE;
   });
-  for (std::size_t k = 1; k < s.size(); ++k)
-    if (compare_lexicographic(input[s[k - 1]], input[s[k]]) == ZERO) {
-      Index j = k - 1;
-      while (j > 0 && compare_lexicographic(input[s[j - 1]], input[s[k]]) == ZERO) --j;
-      tr.add_duplicate(s[k], s[j]);
-    }
+  // each point equal to the first of its run (the smallest index: the sort is stable) is a duplicate of it
+  for (std::size_t k = 1, first = 0; k < s.size(); ++k) {
+    if (compare_lexicographic(input[s[first]], input[s[k]]) == ZERO)
+      tr.add_duplicate(s[k], s[first]);
+    else
+      first = k;
+  }
   tr.set_dimension(one_point ? 0 : 1);
 }
 
 void detail::undefined_t2(std::span<const Point> input, Index p, Index a, Index b) {
-  throw Undefined("triangulate: the antipode of " + point_name(input, p) + " lies inside the hull edge from " +
-                  point_name(input, a) + " to " + point_name(input, b) +
+  throw Undefined("triangulate: the antipode of " + named(input, p) + " lies inside the hull edge from " +
+                  named(input, a) + " to " + named(input, b) +
                   " of the other points, which lie in the closed hemisphere of that edge's great circle: the "
                   "face beyond it would be the open hemisphere bounded by the whole circle, not a triangle");
 }
