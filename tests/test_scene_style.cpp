@@ -137,7 +137,21 @@ TEST(SceneStyle, BadAttributesGiveFileLineAndWhatIsWrong) {
   expect_error("1 2 label=a\"b\"\n", 1, "a quoted value follows '='");
   expect_error("1 2 \"x\"\n", 1, "a quoted value follows '='");
   expect_error("1 2 label=\"a\"b\n", 1, "a space must follow the closing '\"'");
+  // A '"' opens a value only right after the first '=' (found by fuzz_scene: the label '=""'
+  // was accepted, then written back as label="=""", which does not read).
+  expect_error("label A 0 0 label==\"\"\n", 1, "a quoted value follows '='");
+  expect_error("1 2 label=a=\"b\"\n", 1, "a quoted value follows '='");
   expect_error("label style 1 2\n", 1, "'style' is a keyword, not a label name");
+}
+
+// The style attributes refuse a label with '"' also when they are set without a scene file.
+TEST(SceneStyle, ALabelHoldsNoQuote) {
+  SceneStyle st;
+  EXPECT_THROW(set_scene_attribute(st, "label", "a\"b", SceneKind::point), BadInput);
+  EXPECT_FALSE(st.label.has_value());
+  set_scene_attribute(st, "label", "a=b", SceneKind::point);
+  ASSERT_TRUE(st.label.has_value());
+  EXPECT_EQ(*st.label, "a=b");
 }
 
 TEST(SceneStyle, KeysAndKindsComeFromOneTable) {

@@ -190,8 +190,9 @@ class Parser {
     throw ParseError(scene_.name, line_, message);
   }
   // Splits a line into words. '#' starts a comment, except right after '=' (the colour of
-  // `color=#d62728`); a value that starts with '"' right after '=' runs to the next '"' and may
-  // hold spaces and '#' (`label="convex hull #2"`).
+  // `color=#d62728`); a value that starts with '"' right after the word's first '=' runs to the
+  // next '"' and may hold spaces and '#' (`label="convex hull #2"`). No other '"' is allowed:
+  // `label=="x"` would give the label `="x"`, which no quoting writes back.
   std::vector<std::string_view> split(std::string_view s) const {
     std::vector<std::string_view> words;
     std::size_t i = 0;
@@ -202,7 +203,7 @@ class Parser {
         if (s[i] == '#' && (i == b || s[i - 1] != '=')) break;
         if (s[i] == '"') {
           const std::size_t close = s.find('"', i + 1);
-          if (i == b || s[i - 1] != '=' || close == std::string_view::npos)
+          if (i == b || s.find('=', b) != i - 1 || close == std::string_view::npos)
             fail(fmt::format("{}: a quoted value follows '=' and ends with '\"'", quote(s.substr(b))));
           i = close + 1;
           if (i < s.size() && !is_space(s[i])) fail(fmt::format("{}: a space must follow the closing '\"'", quote(s.substr(b))));

@@ -79,7 +79,8 @@ bool yes_no(std::string_view key, std::string_view v) {
   bad(fmt::format("{}={}: write {}=yes or {}=no", key, shown(v), key, key));
 }
 
-// Well-formed UTF-8 without control characters, at most 200 bytes.
+// Well-formed UTF-8 without control characters or '"' (a label is written back quoted), at most
+// 200 bytes.
 std::string label_text(std::string_view v) {
   if (v.size() > 200) bad(fmt::format("label={}: a label has at most 200 bytes, this one {}", shown(v), v.size()));
   for (std::size_t i = 0; i < v.size();) {
@@ -88,6 +89,7 @@ std::string label_text(std::string_view v) {
     bool ok = n > 0 && i + n <= v.size() && (c >= 0x20 && c != 0x7f);
     for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(v[i + k]) >> 6) == 0x2;
     if (!ok) bad(fmt::format("label={}: byte {} is a control character or not UTF-8", shown(v), i + 1));
+    if (c == '"') bad(fmt::format("label={}: byte {} is '\"': a label cannot hold one", shown(v), i + 1));
     i += n;
   }
   return std::string(v);
