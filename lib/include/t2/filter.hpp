@@ -65,6 +65,16 @@
 /// small; else on dyadic GMP numbers (a GMP integer times a power of two), into which every
 /// double converts exactly.
 ///
+/// **Big integers.** On `Integer` coordinates (exact constructions) whose bits do not all fit a
+/// double, the semi-static bound runs on x̃ = mpz_get_d(x), x truncated towards zero: x̃ = x(1 + δ)
+/// with −2u < δ ≤ 0, and (1 − u)³ < 1 − 2u, so δ is a product of three factors 1 + δⱼ, |δⱼ| ≤ u:
+/// three roundings more on every leaf of a monomial, k + 3D in all. With C₃ = (k + 3D)·u·(1 + 2⁻⁴⁰)
+/// (k + 3D ≤ 2⁹), fl(C₃·fl(Σ|m̃|)) ≥ γ_{k+3D}·Σ|m| as for C₂, since Σ|m̃| ≥ (1 − 2u)^D·Σ|m|. No
+/// underflow: x̃ is an integer (x has no bits below 1), and so is every rounded sum, difference
+/// and product of integers, so a nonzero node has magnitude ≥ 1. Overflow makes a magnitude node
+/// +∞ (each magnitude node bounds |its value node|, rounding being monotone), so the bound is +∞
+/// or NaN and decides nothing. A magnitude of 0 means a zero factor in every monomial: P = 0.
+///
 /// There are no epsilons: the bound only decides *whether* the fast answer is certain.
 
 #include <algorithm>
@@ -284,6 +294,7 @@ constexpr StaticBound derive_bound(const F& f) {
   if (s.homogeneous && s.total > 0 && s.count <= 0x1p60 && s.ops <= 0x1p60 && s.depth + s.total <= 512) {
     b.c = s.count * s.depth * 0x1p-53 * (1 + 0x1p-40);
     b.c2 = s.depth * 0x1p-53 * (1 + 0x1p-40);
+    if (s.depth + 3 * s.total <= 512) b.c3 = (s.depth + 3 * s.total) * 0x1p-53 * (1 + 0x1p-40);
   }
   return b;
 }
@@ -407,6 +418,21 @@ Sign static_filter_sign(F& f, const A&... args) {
   count_exact();
   return static_filter_exact(b, f, r, args...);
 }
+
+/// The semi-static bound on big integers read as the doubles below them (file comment, "Big
+/// integers"): the certified sign, or 2.
+template <class F, class... A>
+int big_integer_filter(const StaticBound& b, F& f, const A&... args) {
+  const auto read = [](const Integer& x) {
+    const double d = mpz_get_d(x.get_mpz_t());  // truncated towards zero: an integer
+    return Magnitude{d, std::fabs(d)};
+  };
+  const Magnitude e = apply_leaves(f, read, args...);
+  if (e.m == 0) return 0;  // every monomial has a zero factor
+  const double bound = b.c3 * e.m;
+  const int sign = (e.v > bound) - (-e.v > bound);  // false for an infinite or NaN bound
+  return sign != 0 ? sign : 2;
+}
 }  // namespace detail
 
 /// The sign of `f(args...)` evaluated directly in exact arithmetic (integer coordinates).
@@ -429,7 +455,8 @@ inline bool fits_filter(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(),
 /// Filtered for `double` coordinates with the bound derived from the shape of `f` (file
 /// comment; `f` must be homogeneous); for `Integer` coordinates the same filter runs first when
 /// every coordinate has at most 52 bits (they convert to doubles exactly, and the filter's
-/// integer certificate often decides), and GMP integers decide the rest. Only calls on
+/// integer certificate often decides), else the semi-static bound on the doubles just below the
+/// coordinates (file comment, "Big integers"), and GMP integers decide the rest. Only calls on
 /// `double` coordinates are counted in filter_stats(). Every coordinate of every argument has
 /// the same type, `double` or `Integer`: a mix (0.5 and 0, a Point and an ExactPoint) does not
 /// compile, since converting it would change the polynomial (tests/compile_fail). The kernel's
@@ -441,11 +468,13 @@ Sign sign_of_poly(F&& f, const A&... args) {
   if constexpr (std::is_same_v<T, double>) {
     return detail::static_filter_sign(f, args...);
   } else {
+    const auto& b = detail::bound_of<A...>(f);
     if (detail::all_leaves([](const Integer& v) { return detail::fits_filter(v); }, args...)) {
-      const auto& b = detail::bound_of<A...>(f);
       const auto r = detail::static_filter(b, f, [](const Integer& v) { return v.get_d(); }, args...);
       if (r.sign != 2) return static_cast<Sign>(r.sign);
       if (detail::rounded_nothing(b, r)) return sign_of(r.value);  // integers: exact
+    } else if (const int s = detail::big_integer_filter(b, f, args...); s != 2) {
+      return static_cast<Sign>(s);
     }
     return exact_sign(f, args...);
   }

@@ -64,8 +64,8 @@ inline Sign orient_double(double a, double b, double c, double d, double e, doub
 /// points this is the usual counter-clockwise turn; ZERO when the three are collinear (which
 /// includes p = ±q). Exact for every finite input: on `double` coordinates a fast path with a
 /// proven error bound and exact expansion stages (orient_double.hpp); on `Integer` coordinates
-/// the same when every coordinate fits in 52 bits (the conversion to double is exact), GMP
-/// otherwise.
+/// the same when every coordinate fits in 52 bits (the conversion to double is exact), else
+/// sign_of_poly's bound on big integers (filter.hpp), then GMP.
 template <class T>
 Sign orient(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>& r) {
   if constexpr (std::is_same_v<T, double>) {
@@ -80,7 +80,7 @@ Sign orient(const BasicPoint<T>& p, const BasicPoint<T>& q, const BasicPoint<T>&
         detail::fits_filter(r.w()) && detail::fits_filter(r.x()) && detail::fits_filter(r.y()))
       return detail::orient_double(p.w().get_d(), p.x().get_d(), p.y().get_d(), q.w().get_d(), q.x().get_d(),
                                    q.y().get_d(), r.w().get_d(), r.x().get_d(), r.y().get_d());
-    return exact_sign([](const auto& a, const auto& b, const auto& c) { return det3(a, b, c); }, p, q, r);
+    return sign_of_poly([](const auto& a, const auto& b, const auto& c) { return det3(a, b, c); }, p, q, r);
   }
 }
 

@@ -67,6 +67,7 @@ struct PolyShape {
 struct StaticBound {
   double c = HUGE_VAL;                     ///< C = count·k·u·(1 + 2⁻⁴⁰); +∞ when there is no bound
   double c2 = HUGE_VAL;                    ///< C₂ = k·u·(1 + 2⁻⁴⁰) of the semi-static bound
+  double c3 = HUGE_VAL;                    ///< C₃ = (k + 3D)·u·(1 + 2⁻⁴⁰): the same on big integers
   std::array<int, kMaxPolyArgs> degree{};  ///< the exponent dᵢ of each argument's maximum
   bool per_argument = false;               ///< false: one maximum M of all, to the power `total`
   int total = 0;                           ///< the total degree D

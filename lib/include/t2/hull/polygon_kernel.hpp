@@ -123,10 +123,13 @@ struct KernelRegion {
 // are seen in one direction: orient, zero for them, is right to tie them.) Rank -1: q is v or
 // ¬v, which have no direction from v (both on m: compared only there).
 inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& q) {
-  if (sign_of(value(m, q)) != 0) return 1;
+  if (side(m, q) != 0) return 1;
   if (q == v || q == antipode(v)) return -1;
-  const ExactLine vq = join(v, q);
-  return sign_of(vq.W() * m.W() + vq.X() * m.X() + vq.Y() * m.Y()) > 0 ? 0 : 2;
+  // the sign of (v ∨ q)·m = det |v; q; m|: positive when v ∨ q has m's direction
+  const auto det = [](const auto& a, const auto& b, const auto& n) {
+    return det3(a.w, a.x, a.y, b.w, b.x, b.y, n.W, n.X, n.Y);
+  };
+  return sign_of_poly(det, v, q, m) > 0 ? 0 : 2;
 }
 
 // Moves the finger f to the corner of R extreme as seen from v (a point of m, R left of m),
@@ -163,13 +166,13 @@ inline void climb(KernelRegion& R, const ExactPoint& v, const ExactLine& m, std:
 // l and R lies on its right, half a turn wide: then a corner next to the run on l is right of it.
 inline std::size_t removed_corner(const KernelRegion& R, const ExactLine& l) {
   for (std::size_t f : {R.F, R.L})
-    if (sign_of(value(l, R.c[f].p)) < 0) return f;
+    if (side(l, R.c[f].p) < 0) return f;
   for (std::size_t f : {R.F, R.L})
     for (bool forward : {true, false}) {
       std::size_t k = f;
       for (std::size_t steps = 0; steps < R.c.size(); ++steps) {
         k = forward ? R.c[k].next : R.c[k].prev;
-        const Sign s = sign_of(value(l, R.c[k].p));
+        const Sign s = side(l, R.c[k].p);
         if (s < 0) return k;
         if (s > 0 || k == f) break;
       }
@@ -182,7 +185,7 @@ inline std::size_t removed_corner(const KernelRegion& R, const ExactLine& l) {
 // back across l are linked in its place. False when every corner is right of l (R is empty).
 inline bool cut(KernelRegion& R, const ExactLine& l, std::size_t s) {
   //> kernel-cut
-  const auto right = [&](std::size_t k) { return sign_of(value(l, R.c[k].p)) < 0; };
+  const auto right = [&](std::size_t k) { return side(l, R.c[k].p) < 0; };
   std::size_t r = s, t = s;  // the run r … t right of l
   while (right(R.c[t].next)) {
     t = R.c[t].next;
@@ -191,13 +194,13 @@ inline bool cut(KernelRegion& R, const ExactLine& l, std::size_t s) {
   while (right(R.c[r].prev)) r = R.c[r].prev;
   const std::size_t a = R.c[r].prev, b = R.c[t].next;  // kept: left of l or on it
   std::size_t x = a, y = b;  // where the boundary leaves across l and comes back
-  if (sign_of(value(l, R.c[a].p)) > 0) {
+  if (side(l, R.c[a].p) > 0) {
     x = R.add(crossing(R.c[a].line, l, R.c[a].p, R.c[r].p), l);
     R.link(a, x);
   } else {
     R.c[a].line = l;
   }
-  if (sign_of(value(l, R.c[b].p)) > 0) {
+  if (side(l, R.c[b].p) > 0) {
     y = R.add(crossing(R.c[t].line, l, R.c[t].p, R.c[b].p), R.c[t].line);
     R.link(y, b);
   }
@@ -266,7 +269,7 @@ inline PolygonKernel polygon_kernel(std::span<const Point> P) {
     std::size_t s = R.c.size();  // a corner right of l, if any
     if (i == 0) {  // the hemisphere has no tangents: look at its four corners
       for (std::size_t k = 0; k < 4; ++k)
-        if (sign_of(detail::value(l, R.c[k].p)) < 0) s = k;
+        if (side(l, R.c[k].p) < 0) s = k;
     } else {  // E[i] is on m: R is seen from it within half a turn
       detail::climb(R, E[i], m, R.F, -1);
       detail::climb(R, E[i], m, R.L, +1);
