@@ -100,13 +100,15 @@ inline int sum(int elen, const double* e, int flen, const double* f, double* h) 
       if (hh != 0) h[hi++] = hh;
     }
   }
-  for (; ei < elen; next_e()) {
+  while (ei < elen) {  // next_e and next_f advance ei and fi
     two_sum(q, enow, qnew, hh);
+    next_e();
     q = qnew;
     if (hh != 0) h[hi++] = hh;
   }
-  for (; fi < flen; next_f()) {
+  while (fi < flen) {
     two_sum(q, fnow, qnew, hh);
+    next_f();
     q = qnew;
     if (hh != 0) h[hi++] = hh;
   }
