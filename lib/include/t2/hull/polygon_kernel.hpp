@@ -125,11 +125,8 @@ struct KernelRegion {
 inline int rank_from(const ExactPoint& v, const ExactLine& m, const ExactPoint& q) {
   if (side(m, q) != 0) return 1;
   if (q == v || q == antipode(v)) return -1;
-  // the sign of (v ∨ q)·m = det |v; q; m|: positive when v ∨ q has m's direction
-  const auto det = [](const auto& a, const auto& b, const auto& n) {
-    return det3(a.w, a.x, a.y, b.w, b.x, b.y, n.W, n.X, n.Y);
-  };
-  return sign_of_poly(det, v, q, m) > 0 ? 0 : 2;
+  // (v ∨ q)·m = det |v; q; m|, positive when v ∨ q has m's direction
+  return orient(v, q, dual(m)) > 0 ? 0 : 2;
 }
 
 // Moves the finger f to the corner of R extreme as seen from v (a point of m, R left of m),
