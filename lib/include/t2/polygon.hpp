@@ -122,10 +122,10 @@ namespace detail {
 /// that), when the double sum decides it and every coordinate is 0 or has magnitude in
 /// [2⁻²⁰⁰, 2²⁰⁰]; ZERO otherwise (then the exact sum must). **Proof of the bound.**
 /// The term tᵢ = (aᵢ − bᵢ)/(wᵢwᵢ₊₁), aᵢ = xᵢyᵢ₊₁, bᵢ = yᵢxᵢ₊₁, puts at most four roundings on
-/// each of its two monomials (its product, the difference, the product of the weights, the
-/// quotient; γ₅ below is one more than needed. Each rounding is relative:
-/// none underflows in that range: a nonzero aᵢ − bᵢ is at least 2⁻⁴⁵², the quotient at least
-/// 2⁻⁸⁵², and nothing overflows), so |t̂ᵢ − tᵢ| ≤ γ₅ Tᵢ, Tᵢ = (|aᵢ| + |bᵢ|)/|wᵢwᵢ₊₁|; the sum
+/// each of its two monomials: its product, the difference, the product of the weights and the
+/// quotient. Each rounding is relative, since none underflows in that range (a nonzero aᵢ − bᵢ
+/// is at least 2⁻⁴⁵², the quotient at least 2⁻⁸⁵²) and nothing overflows. So, with γ₅ (one
+/// more than needed), |t̂ᵢ − tᵢ| ≤ γ₅ Tᵢ, Tᵢ = (|aᵢ| + |bᵢ|)/|wᵢwᵢ₊₁|; the sum
 /// adds n − 1 roundings more, so |Ŝ − S| ≤ γ_{n+4} Σ Tᵢ. T̂ = Σ T̂ᵢ carries at most n + 4
 /// roundings too, so (2 n + 10) u T̂ bounds the error for n < 2⁴⁰. (With w = 1 the product of
 /// the weights and the quotient are exact, and the bound is merely a little loose.)
