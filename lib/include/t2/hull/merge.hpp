@@ -61,13 +61,13 @@ template <class K>
                        point_name(H[(i + 1) % m]) + ": no open hemisphere holds the three",
                    {H[i], H[(i + 1) % m], q});
   if (m == 2)
-    throw NoHull("the antipode of " + point_name(q) + " lies on the segment " + point_name(H[0]) + " " + point_name(H[1]) +
-                     ": no open hemisphere holds the three",
+    throw NoHull("the antipode of " + point_name(q) + " lies on the segment " + point_name(H[0]) + " " +
+                     point_name(H[1]) + ": no open hemisphere holds the three",
                  {H[0], H[1], q});
   for (std::size_t k = 1; k + 1 < m; ++k)  // the fan triangle h0 h_k h_{k+1} that holds ¬q
     if (K::orient(P[H[0]], P[H[k]], nq) >= 0 && K::orient(P[H[0]], P[H[k + 1]], nq) <= 0)
-      throw NoHull("the antipode of " + point_name(q) + " lies in the triangle " + point_name(H[0]) + " " + point_name(H[k]) + " " +
-                       point_name(H[k + 1]) + ": no open hemisphere holds the four",
+      throw NoHull("the antipode of " + point_name(q) + " lies in the triangle " + point_name(H[0]) + " " +
+                       point_name(H[k]) + " " + point_name(H[k + 1]) + ": no open hemisphere holds the four",
                    {H[0], H[k], H[k + 1], q});
   throw NoHull("no open hemisphere holds the points", H);
 }

@@ -78,7 +78,8 @@ class DelaunayRecorder {
     if (tr_ == nullptr || no_circle_ || !front_) return s;
     const std::size_t ia = input_index(a), ib = input_index(b), ic = input_index(c), id = input_index(d);
     Step st = state("in-circle", Depth::debugging, "triangles so far");
-    st.text = "Is " + point_name(id) + " inside the circle through " + point_name(ia) + ", " + point_name(ib) + ", " + point_name(ic) + "? " +
+    st.text = "Is " + point_name(id) + " inside the circle through " + point_name(ia) + ", " + point_name(ib) + ", " +
+              point_name(ic) + "? " +
               (s > 0   ? "Yes: the edge it faces is not locally Delaunay and will flip."
                : s < 0 ? "No: the edge it faces stays."
                        : "It lies on the circle: the symbolic perturbation decides.");
@@ -102,8 +103,9 @@ class DelaunayRecorder {
         if (tr.is_infinite(t)) outside = true;
         else st.touched.push_back(tri(tr, t));
       }
-    st.text = point_name(iv) + (outside ? " lies outside the hull: it is joined to the hull edge it sees first."
-                               : " is located (by the walk) in a triangle or on an edge and joined to its corners.") +
+    st.text = point_name(iv) +
+              (outside ? " lies outside the hull: it is joined to the hull edge it sees first."
+                       : " is located (by the walk) in a triangle or on an edge and joined to its corners.") +
               " Then every edge opposite " + point_name(iv) + " is tested, and flipped when " +
               (no_circle_ ? point_name(iv) + " sees it as a hull edge from outside." : "it is not locally Delaunay.");
     st.points = {iv};
@@ -119,14 +121,15 @@ class DelaunayRecorder {
       if (!tr.is_infinite(x)) st.touched.push_back(tri(tr, x));
     const std::size_t ip = order_[pv];
     if (st.touched.size() == 2) {
-      st.text = point_name(ip) + " lies inside the circle of " + point_name(order_[q]) + ", " + point_name(order_[r]) + ", " + point_name(order_[d]) +
-                ": the edge " + point_name(order_[q]) + " " + point_name(order_[r]) + " is not locally Delaunay and flips to " + point_name(ip) +
-                " " + point_name(order_[d]) + ".";
+      st.text = point_name(ip) + " lies inside the circle of " + point_name(order_[q]) + ", " + point_name(order_[r]) +
+                ", " + point_name(order_[d]) + ": the edge " + point_name(order_[q]) + " " + point_name(order_[r]) +
+                " is not locally Delaunay and flips to " + point_name(ip) + " " + point_name(order_[d]) + ".";
       st.edges = {{ip, order_[d]}};
     } else if (st.touched.size() == 1) {
       const Tri& f = st.touched[0];
-      st.text = point_name(ip) + " sees the hull edge " + point_name(f[1]) + " " + point_name(f[2]) + " from outside: the flip adds the triangle " +
-                point_name(f[0]) + " " + point_name(f[1]) + " " + point_name(f[2]) + " and the hull grows.";
+      st.text = point_name(ip) + " sees the hull edge " + point_name(f[1]) + " " + point_name(f[2]) +
+                " from outside: the flip adds the triangle " + point_name(f[0]) + " " + point_name(f[1]) + " " +
+                point_name(f[2]) + " and the hull grows.";
       st.edges = {{f[1], f[2]}};
     } else {
       st.text = "A flip between two infinite triangles at " + point_name(ip) + ".";
@@ -146,7 +149,6 @@ class DelaunayRecorder {
   }
 
  private:
-
   Tri tri(const Triangulation& tr, Index t) const {
     Tri x{order_[tr.vertex(t, 0)], order_[tr.vertex(t, 1)], order_[tr.vertex(t, 2)]};
     std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
@@ -186,7 +188,8 @@ class DelaunayRecorder {
     st.triangles = {f};
     st.touched = {f};
     st.points = {f[0], f[1], f[2]};
-    st.text = "The first triangle: " + point_name(f[0]) + ", " + point_name(f[1]) + ", " + point_name(f[2]) + " (the first points, in the " +
+    st.text = "The first triangle: " + point_name(f[0]) + ", " + point_name(f[1]) + ", " + point_name(f[2]) +
+              " (the first points, in the " +
               "BRIO–Hilbert insertion order, that are not collinear). Its outside is three infinite triangles.";
     out_->add(std::move(st));
   }

@@ -82,7 +82,6 @@ class HullRecorder {
   bool consistent() const { return consistent_; }
 
  private:
-
   void add(const char* kind, Depth d, std::string text, const char* structure, std::vector<std::size_t> chain,
            std::vector<std::size_t> points, std::vector<Edge> edges = {}, bool closed = false) {
     Step s;
@@ -104,25 +103,33 @@ class HullRecorder {
     if (step == HullStep::consider) {
       current_ = i;
       if (n < 2) {
-        add("consider", Depth::debugging, prefix + point_name(i) + " comes next; the " + structure + " holds one point, so it " +
-            "will be pushed.", structure, c, {i});
+        add("consider", Depth::debugging,
+            prefix + point_name(i) + " comes next; the " + structure + " holds one point, so it " + "will be pushed.",
+            structure, c, {i});
       } else {
-        add("consider", Depth::debugging, prefix + point_name(i) + " comes next: do " + point_name(c[n - 2]) + ", " + point_name(c[n - 1]) +
-            ", " + point_name(i) + " turn left (counter-clockwise)?", structure, c, {i}, {{c[n - 1], i}});
+        add("consider", Depth::debugging,
+            prefix + point_name(i) + " comes next: do " + point_name(c[n - 2]) + ", " + point_name(c[n - 1]) + ", " +
+                point_name(i) + " turn left (counter-clockwise)?",
+            structure, c, {i}, {{c[n - 1], i}});
       }
     } else if (step == HullStep::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
       c.pop_back();
-      add("pop", change, prefix + point_name(i) + " is popped: the chain makes no left turn at " + point_name(i) +
-          ", so it leaves the chain here (the lower and the upper chain are built apart: a point one drops may be "
-          "a vertex of the other).", structure, c, {i});
+      add("pop", change,
+          prefix + point_name(i) + " is popped: the chain makes no left turn at " + point_name(i) +
+              ", so it leaves the chain here (the lower and the upper chain are built apart: a point one drops may be "
+              "a vertex of the other).",
+          structure, c, {i});
     } else if (step == HullStep::pop) {
       const std::size_t below = n >= 2 ? c[n - 2] : none;
       const std::size_t next = current_ != none ? current_ : c.front();  // closing: back to the pivot
-      std::string why = below == none ? "" : point_name(below) + ", " + point_name(i) + ", " + point_name(next) + " make no left turn, so ";
+      std::string why = below == none ? ""
+                                      : point_name(below) + ", " + point_name(i) + ", " + point_name(next) +
+                                            " make no left turn, so ";
       c.pop_back();
-      add("pop", Depth::lecture, prefix + point_name(i) + " is popped: " + why + point_name(i) + " is no hull vertex" +
-          (current_ == none ? " (closing the chain back to the pivot " + point_name(next) + ")." : "."), structure, c,
-          {i, next}, below == none ? std::vector<Edge>{} : std::vector<Edge>{{below, i}, {i, next}});
+      add("pop", Depth::lecture,
+          prefix + point_name(i) + " is popped: " + why + point_name(i) + " is no hull vertex" +
+              (current_ == none ? " (closing the chain back to the pivot " + point_name(next) + ")." : "."),
+          structure, c, {i, next}, below == none ? std::vector<Edge>{} : std::vector<Edge>{{below, i}, {i, next}});
     } else if (step == HullStep::push) {
       current_ = none;
       add("push", change, prefix + point_name(i) + " is pushed: the " + structure + " turns left all along.", structure,
@@ -136,9 +143,10 @@ class HullRecorder {
       u_ = i;
       cand_ = none;
       add("vertex", Depth::lecture,
-          c.size() == 1 ? point_name(i) + ", the first point in the chart's order (leftmost, then lowest), is a hull vertex."
-                        : point_name(i) + " is the next hull vertex: no point lies right of " + point_name(c[c.size() - 2]) + " → " +
-                              point_name(i) + ", and none lies beyond it on that line.",
+          c.size() == 1
+              ? point_name(i) + ", the first point in the chart's order (leftmost, then lowest), is a hull vertex."
+              : point_name(i) + " is the next hull vertex: no point lies right of " + point_name(c[c.size() - 2]) +
+                    " → " + point_name(i) + ", and none lies beyond it on that line.",
           "hull so far", c, {i}, c.size() > 1 ? std::vector<Edge>{{c[c.size() - 2], i}} : std::vector<Edge>{});
       return;
     }
@@ -153,13 +161,17 @@ class HullRecorder {
       const ChartOrder<ExactKernel> order{chart_};
       if (s < 0) {
         cand_ = i;
-        text = point_name(i) + " lies right of " + point_name(u_) + " → " + point_name(q) + ": it replaces " + point_name(q) + " as the candidate.";
+        text = point_name(i) + " lies right of " + point_name(u_) + " → " + point_name(q) + ": it replaces " +
+               point_name(q) + " as the candidate.";
       } else if (s == 0 && order.farther(P_[u_], P_[q], P_[i])) {
         cand_ = i;
-        text = point_name(i) + " lies on the line " + point_name(u_) + " " + point_name(q) + ", beyond " + point_name(q) + ": it becomes the candidate.";
+        text = point_name(i) + " lies on the line " + point_name(u_) + " " + point_name(q) + ", beyond " +
+               point_name(q) + ": it becomes the candidate.";
       } else {
-        text = point_name(i) + (s == 0 ? " lies on the line " + point_name(u_) + " " + point_name(q) + ", not beyond " + point_name(q)
-                              : " lies left of " + point_name(u_) + " → " + point_name(q)) + ": the candidate stays " + point_name(q) + ".";
+        text = point_name(i) +
+               (s == 0 ? " lies on the line " + point_name(u_) + " " + point_name(q) + ", not beyond " + point_name(q)
+                       : " lies left of " + point_name(u_) + " → " + point_name(q)) +
+               ": the candidate stays " + point_name(q) + ".";
       }
     }
     add("consider", Depth::debugging, text, "hull so far", c, {i, cand_}, {{u_, cand_}});
@@ -194,9 +206,9 @@ class HullRecorder {
     const std::size_t a = kept.back(), b = kept.front();
     kept.push_back(q);
     add("bridge", Depth::lecture,
-        point_name(q) + ", a vertex of the negative half's hull, joins: it sees the hull edges from " + point_name(a) + " round to " +
-            point_name(b) + " (their inner vertices leave), and the bridges " + point_name(a) + " → " + point_name(q) + " and " + point_name(q) + " → " +
-            point_name(b) + " close the hull.",
+        point_name(q) + ", a vertex of the negative half's hull, joins: it sees the hull edges from " + point_name(a) +
+            " round to " + point_name(b) + " (their inner vertices leave), and the bridges " + point_name(a) + " → " +
+            point_name(q) + " and " + point_name(q) + " → " + point_name(b) + " close the hull.",
         "hull so far", kept, {q}, {{a, q}, {q, b}}, true);
   }
 

@@ -52,8 +52,9 @@ class SweepRecorder {
       const Tri f = st.triangles.at(0);
       st.touched = {f};
       st.points = {v, f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]};
-      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + point_name(f[0]) + ", " + point_name(f[1]) + ", " +
-                point_name(f[2]) + " (" + point_name(v) + " is the first point off the line of the smallest two).";
+      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + point_name(f[0]) + ", " +
+                point_name(f[1]) + ", " + point_name(f[2]) + " (" + point_name(v) +
+                " is the first point off the line of the smallest two).";
       out_->add(std::move(st));
       return;
     }
@@ -62,15 +63,19 @@ class SweepRecorder {
     st.touched = fan(tr, v);
     if (t2::compare_xy(input_[v], input_[third_]) < 0) {
       st.depth = Depth::lecture;  // a point on the first edge: joined to both triangles, no flip
-      st.text = point_name(v) + " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
+      st.text = point_name(v) +
+                " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
                 "on it, in two.";
       out_->add(std::move(st));
       return;
     }
     const Tri& t = st.touched.at(0);
     st.edges = {{t[0] == v ? t[1] : t[0], t[2] == v ? t[1] : t[2]}};
-    st.text = point_name(v) + ", the next point in (x, y) order, lies outside the hull of the points before it and sees the hull "
-              "edge " + point_name(st.edges[0][0]) + " " + point_name(st.edges[0][1]) + " at the last point: joined to it, one triangle. "
+    st.text = point_name(v) +
+              ", the next point in (x, y) order, lies outside the hull of the points before it and sees the hull "
+              "edge " +
+              point_name(st.edges[0][0]) + " " + point_name(st.edges[0][1]) +
+              " at the last point: joined to it, one triangle. "
               "Next, step 35: the hull edges next to it that it also sees.";
     out_->add(std::move(st));
     flips_ = 0;
@@ -87,9 +92,10 @@ class SweepRecorder {
     if (st.touched.size() == 1) {
       const Tri& f = st.touched[0];
       st.edges = {{f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]}};
-      st.text = point_name(v) + " also sees the hull edge " + point_name(st.edges[0][0]) + " " + point_name(st.edges[0][1]) +
-                " from outside too: step 35 flips it into the triangle " + point_name(f[0]) + " " + point_name(f[1]) + " " +
-                point_name(f[2]) + ", and the reflex angle at " + point_name(v) + " is gone.";
+      st.text = point_name(v) + " also sees the hull edge " + point_name(st.edges[0][0]) + " " +
+                point_name(st.edges[0][1]) + " from outside too: step 35 flips it into the triangle " +
+                point_name(f[0]) + " " + point_name(f[1]) + " " + point_name(f[2]) + ", and the reflex angle at " +
+                point_name(v) + " is gone.";
     }
     out_->add(std::move(st));
     ++flips_;
@@ -109,7 +115,6 @@ class SweepRecorder {
   }
 
  private:
-
   static Tri tri(const Triangulation& tr, Index t) {
     Tri x{tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)};
     std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());

@@ -45,8 +45,9 @@ class TriangulateT2Recorder {
     st.touched = st.triangles;
     const Tri& f = st.touched.at(0);
     st.points = {f[0], f[1], f[2]};
-    st.text = "The points go in a spatial order on the sphere (or in input order). The first triangle: " + point_name(f[0]) +
-              ", " + point_name(f[1]) + ", " + point_name(f[2]) + ", with v∞ beyond each of its edges.";
+    st.text =
+        "The points go in a spatial order on the sphere (or in input order). The first triangle: " + point_name(f[0]) +
+        ", " + point_name(f[1]) + ", " + point_name(f[2]) + ", with v∞ beyond each of its edges.";
     out_->add(std::move(st));
   }
 
@@ -57,7 +58,9 @@ class TriangulateT2Recorder {
     st.points = {v};
     st.touched = fan(tr, p);
     switch (how) {
-      case T2Step::face: st.text = point_name(v) + " lies inside a face: it splits it in three."; break;
+      case T2Step::face:
+        st.text = point_name(v) + " lies inside a face: it splits it in three.";
+        break;
       case T2Step::edge:
         st.text = point_name(v) + " lies inside an edge: the two faces on it split into four.";
         break;
@@ -65,26 +68,32 @@ class TriangulateT2Recorder {
         st.kind = "merge";
         const auto [d, k] = tr.duplicates().back();
         st.points = {order_[d], order_[k]};
-        st.text = point_name(order_[d]) + " equals " + point_name(order_[k]) + ": one vertex, " + point_name(order_[k]) + " (the smaller index).";
+        st.text = point_name(order_[d]) + " equals " + point_name(order_[k]) + ": one vertex, " +
+                  point_name(order_[k]) + " (the smaller index).";
         break;
       }
       case T2Step::outside:
-        st.text = point_name(v) + " lies outside the hull and its antipode too, so the hull survives: joined to every hull edge it "
-                  "sees, " + std::to_string(st.touched.size()) + " new triangle" + (st.touched.size() == 1 ? "" : "s") + ".";
+        st.text = point_name(v) +
+                  " lies outside the hull and its antipode too, so the hull survives: joined to every hull edge it "
+                  "sees, " +
+                  std::to_string(st.touched.size()) + " new triangle" + (st.touched.size() == 1 ? "" : "s") + ".";
         break;
       case T2Step::cover:
-        st.text = point_name(v) + " sees every hull edge: its antipode lies inside the hull. It takes the place of v∞ in every "
+        st.text = point_name(v) +
+                  " sees every hull edge: its antipode lies inside the hull. It takes the place of v∞ in every "
                   "infinite face; the faces now cover the sphere and the hull is gone.";
         break;
       case T2Step::antipode:
-        st.text = point_name(v) + " is the antipode of a hull vertex: it takes the place of v∞, and the two faces at the antipodal "
+        st.text = point_name(v) +
+                  " is the antipode of a hull vertex: it takes the place of v∞, and the two faces at the antipodal "
                   "edge are lunes, the edge along the bisector of the hull angle (seed 000, figure 5.18).";
         break;
       case T2Step::waits:
         st.kind = "wait";
         st.depth = Depth::debugging;
         st.touched.clear();
-        st.text = point_name(v) + "'s antipode lies inside a hull edge: the face beyond would be bounded by a whole great circle, so " +
+        st.text = point_name(v) +
+                  "'s antipode lies inside a hull edge: the face beyond would be bounded by a whole great circle, so " +
                   point_name(v) + " waits until the hull is gone.";
         break;
     }
@@ -98,8 +107,9 @@ class TriangulateT2Recorder {
     st.touched = {tri(tr, t)};
     const Tri& f = st.touched[0];
     st.edges = {{f[0] == order_[p] ? f[1] : f[0], f[2] == order_[p] ? f[1] : f[2]}};
-    st.text = point_name(order_[p]) + " lies outside the hull and sees the hull edge " + point_name(st.edges[0][0]) + " " +
-              point_name(st.edges[0][1]) + ": joined to it. Next, step 35: the hull edges next to it that it also sees.";
+    st.text = point_name(order_[p]) + " lies outside the hull and sees the hull edge " + point_name(st.edges[0][0]) +
+              " " + point_name(st.edges[0][1]) +
+              ": joined to it. Next, step 35: the hull edges next to it that it also sees.";
     out_->add(std::move(st));
   }
 
@@ -110,8 +120,8 @@ class TriangulateT2Recorder {
     st.points = {order_[v]};
     for (Index x : {t, u})
       if (!tr.is_infinite(x)) st.touched.push_back(tri(tr, x));
-    st.text = point_name(order_[v]) + " also sees the next hull edge: step 35 flips it into a triangle at " + point_name(order_[v]) +
-              ", and the reflex angle there is gone.";
+    st.text = point_name(order_[v]) + " also sees the next hull edge: step 35 flips it into a triangle at " +
+              point_name(order_[v]) + ", and the reflex angle there is gone.";
     out_->add(std::move(st));
   }
 
@@ -130,7 +140,6 @@ class TriangulateT2Recorder {
   }
 
  private:
-
   // A face as input indices, rotated so that its smallest index comes first.
   Tri tri(const Triangulation& tr, Index t) const {
     Tri x{order_[tr.vertex(t, 0)], order_[tr.vertex(t, 1)], order_[tr.vertex(t, 2)]};
