@@ -1,8 +1,6 @@
 // Chapter 07 on point sets: Melkman's polygon hull against CGAL::convex_hull_2 and t2::convex_hull;
 // antipodal pairs, diameter and width against brute force in exact rationals (the definitions,
 // not the calipers); the T² cases of the diameter.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
 #include <set>
@@ -12,12 +10,12 @@
 #include "t2/hull/calipers.hpp"
 #include "t2/hull/diameter.hpp"
 #include "t2/hull/melkman.hpp"
+#include "cgal/cgal_oracle.hpp"
 #include "testing.hpp"
 
 namespace t2 {
 namespace {
 
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using gen::Kind;
 using testing::polygon_of;
 using testing::at;
@@ -27,20 +25,8 @@ using testing::same_cycle;
 using testing::sq;
 using Q2 = testing::Pos;  // a drawn position, exactly (oracle.hpp)
 
-// CGAL's hull of front points, as indices (each vertex matched to the first equal input point).
-std::vector<std::size_t> cgal_hull(const std::vector<Point>& P) {
-  std::vector<Epeck::Point_2> in, out;
-  for (const auto& p : P) in.emplace_back(Epeck::FT(q(p.x())) / Epeck::FT(q(p.w())), Epeck::FT(q(p.y())) / Epeck::FT(q(p.w())));
-  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
-  std::vector<std::size_t> h;
-  for (const auto& c : out)
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (in[i] == c) {
-        h.push_back(i);
-        break;
-      }
-  return h;
-}
+// CGAL's hull of front points, as indices (each vertex the first equal input point).
+std::vector<std::size_t> cgal_hull(const std::vector<Point>& P) { return testing::cgal::hull_2(P); }
 
 TEST(Melkman, RandomPolygonsOfEveryKindLikeCgal) {
   for (Kind k : {Kind::simple_polygon, Kind::star_polygon, Kind::convex_polygon, Kind::monotone_polygon})

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <random>
 
-#include "cgal_delaunay.hpp"
+#include "cgal/cgal_delaunay.hpp"
 #include "delaunay_certificates.hpp"
 #include "delaunay_inputs.hpp"
 

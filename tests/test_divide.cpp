@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "cgal_delaunay.hpp"
+#include "cgal/cgal_delaunay.hpp"
 #include "delaunay_certificates.hpp"
 #include "delaunay_inputs.hpp"
 #include "t2/triangulation/divide.hpp"

@@ -1,12 +1,11 @@
 // t2::convex_hull on front-only input against CGAL::convex_hull_2 (exact kernel), every
 // algorithm, as cyclic sequences of points. CGAL is the oracle here only.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
 #include <numeric>
 #include <random>
 
+#include "cgal/cgal_oracle.hpp"
 #include "hull_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "testing.hpp"
@@ -14,32 +13,13 @@
 namespace t2 {
 namespace {
 
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using gen::Kind;
 using testing::all_algorithms;
 using testing::at;
 using testing::same_cycle;
 
-// The front point [w, x, y] as CGAL's exact point (x/w, y/w).
-Epeck::Point_2 cgal(const Point& p) {
-  return {Epeck::FT(testing::q(p.x())) / Epeck::FT(testing::q(p.w())),
-          Epeck::FT(testing::q(p.y())) / Epeck::FT(testing::q(p.w()))};
-}
-
-// CGAL's hull, as points of P (each CGAL vertex matched to an input point it equals).
-std::vector<Point> cgal_hull(const std::vector<Point>& P) {
-  std::vector<Epeck::Point_2> in, out;
-  for (const auto& p : P) in.push_back(cgal(p));
-  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
-  std::vector<Point> h;
-  for (const auto& c : out)
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (in[i] == c) {
-        h.push_back(P[i]);
-        break;
-      }
-  return h;
-}
+// CGAL's hull, as points of P (each CGAL vertex the first input point it equals).
+std::vector<Point> cgal_hull(const std::vector<Point>& P) { return at(P, testing::cgal::hull_2(P)); }
 
 void expect_like_cgal(const std::vector<Point>& P, const std::string& what) {
   const auto want = cgal_hull(P);

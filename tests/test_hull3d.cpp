@@ -2,25 +2,20 @@
 // cube and sphere input, against each other on degenerate input (grids, duplicates, points on
 // facets and edges), exact certificates (a closed convex surface with every point inside), the
 // undefined cases, and invariance under permutation.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 #include <random>
 
 #include "t2/gen/generate.hpp"
 #include "t2/hull3d.hpp"
+#include "cgal/cgal_oracle.hpp"
 #include "testing.hpp"
 
 namespace t2 {
 namespace {
 
-using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
 const Hull3dAlgorithm kAll[] = {Hull3dAlgorithm::incremental, Hull3dAlgorithm::quickhull, Hull3dAlgorithm::gift_wrap};
 
 std::vector<Point3> generated(gen::Kind k, std::size_t n, std::uint64_t seed) {
@@ -32,34 +27,8 @@ std::vector<Point3> generated(gen::Kind k, std::size_t n, std::uint64_t seed) {
   return P;
 }
 
-Triangle3 rotated(Triangle3 t) {
-  std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-  return t;
-}
-
 // CGAL's hull of distinct points as sorted triangles of indices (rotated smallest first).
-std::vector<Triangle3> cgal_hull(const std::vector<Point3>& P) {
-  std::vector<Epick::Point_3> in;
-  std::map<std::array<double, 3>, std::uint32_t> index;
-  for (std::uint32_t i = 0; i < P.size(); ++i) {
-    in.emplace_back(P[i].x, P[i].y, P[i].z);
-    index.emplace(std::array<double, 3>{P[i].x, P[i].y, P[i].z}, i);
-  }
-  Mesh m;
-  CGAL::convex_hull_3(in.begin(), in.end(), m);
-  std::vector<Triangle3> out;
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> v;
-    for (auto u : CGAL::vertices_around_face(m.halfedge(f), m)) {
-      const auto& p = m.point(u);
-      v.push_back(index.at({p.x(), p.y(), p.z()}));
-    }
-    EXPECT_EQ(v.size(), 3u);
-    out.push_back(rotated({v[0], v[1], v[2]}));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+std::vector<Triangle3> cgal_hull(const std::vector<Point3>& P) { return testing::cgal::hull_3(P); }
 
 // The certificates of a hull: closed oriented surface, Euler, convex with strict vertices,
 // every input point inside or on it.

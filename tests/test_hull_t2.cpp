@@ -1,12 +1,11 @@
 // t2::convex_hull on input all over T²: projective images of front sets (their hulls are the
 // images of the front hulls, which CGAL computes), exact brute force for small sets, hull
 // existence against an exact brute-force hemisphere test, and the points a NoHull names.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "cgal/cgal_oracle.hpp"
 #include "hull_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "testing.hpp"
@@ -14,7 +13,6 @@
 namespace t2 {
 namespace {
 
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using testing::all_algorithms;
 using testing::at;
 using testing::same_cycle;
@@ -45,18 +43,6 @@ Map random_map(std::mt19937_64& rng) {
   }
 }
 
-// The hull of front points by CGAL, as indices (one per vertex).
-std::vector<std::size_t> cgal_hull_indices(const std::vector<Point>& P) {
-  std::vector<Epeck::Point_2> in, out;
-  for (const auto& p : P)
-    in.emplace_back(Epeck::FT(testing::q(p.x())) / Epeck::FT(testing::q(p.w())),
-                    Epeck::FT(testing::q(p.y())) / Epeck::FT(testing::q(p.w())));
-  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
-  std::vector<std::size_t> h;
-  for (const auto& c : out) h.push_back(static_cast<std::size_t>(std::find(in.begin(), in.end(), c) - in.begin()));
-  return h;
-}
-
 // Small integer front points (exact images under small integer maps).
 std::vector<Point> integer_points(std::mt19937_64& rng, std::size_t n, long range) {
   std::vector<Point> P;
@@ -69,7 +55,7 @@ std::vector<Point> integer_points(std::mt19937_64& rng, std::size_t n, long rang
 void expect_image_hull(const std::vector<Point>& front, const Map& M, const std::string& what) {
   std::vector<Point> image;
   for (const auto& p : front) image.push_back(M(p));
-  const auto want = at(image, cgal_hull_indices(front));
+  const auto want = at(image, testing::cgal::hull_2(front));
   for (HullAlgorithm a : all_algorithms()) {
     const auto got = at(image, convex_hull(image, a));
     EXPECT_TRUE(same_cycle(got, want)) << what << ", " << name(a) << "\ngot  " << testing::text(got)

@@ -1,51 +1,25 @@
 // Convex layers, both ways of seed 003, against repeated CGAL::convex_hull_2 (front input) and
 // against repeated t2::convex_hull by the merge (T² input).
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
 #include "hull_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull/layers.hpp"
+#include "cgal/cgal_oracle.hpp"
 #include "testing.hpp"
 
 namespace t2 {
 namespace {
 
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using gen::Kind;
 using testing::at;
 using testing::same_cycle;
 
-// The layers by their definition: CGAL's hull, then every point equal to one of its vertices
-// removed, again and again.
+// The layers by their definition (CGAL's hull, then every point equal to one of its vertices
+// removed, again and again), as points of P.
 std::vector<std::vector<Point>> cgal_layers(const std::vector<Point>& P) {
-  std::vector<Epeck::Point_2> left;
-  std::vector<Point> of;
-  for (const auto& p : P) {
-    left.emplace_back(Epeck::FT(testing::q(p.x())) / Epeck::FT(testing::q(p.w())),
-                      Epeck::FT(testing::q(p.y())) / Epeck::FT(testing::q(p.w())));
-    of.push_back(p);
-  }
   std::vector<std::vector<Point>> layers;
-  while (!left.empty()) {
-    std::vector<Epeck::Point_2> hull;
-    CGAL::convex_hull_2(left.begin(), left.end(), std::back_inserter(hull));
-    std::vector<Point> layer;
-    for (const auto& h : hull)
-      for (std::size_t i = 0; i < left.size(); ++i)
-        if (left[i] == h) {
-          layer.push_back(of[i]);
-          break;
-        }
-    std::vector<Epeck::Point_2> rest;
-    std::vector<Point> rest_of;
-    for (std::size_t i = 0; i < left.size(); ++i)
-      if (std::find(hull.begin(), hull.end(), left[i]) == hull.end()) rest.push_back(left[i]), rest_of.push_back(of[i]);
-    layers.push_back(layer);
-    left = std::move(rest);
-    of = std::move(rest_of);
-  }
+  for (const auto& layer : testing::cgal::layers_2(P)) layers.push_back(at(P, layer));
   return layers;
 }
 
