@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/deps.sh
+scripts/ninja-trees.sh
 cmake --preset default
 cmake --build --preset default
 build/default/bin/t2 figures          # redraw every figure (chapters and gallery) that changed

@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages t2 needs (as root), or prints the exact apt-get line and stops.
 set -euo pipefail
 packages=(
-  cmake g++ make pkg-config git ca-certificates
+  cmake g++ make ninja-build ccache pkg-config git ca-certificates
   libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev
   doxygen pandoc libjs-katex librsvg2-bin fonts-dejavu-core
   clang libclang-rt-14-dev bubblewrap zip unzip
