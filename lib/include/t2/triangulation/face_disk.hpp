@@ -28,7 +28,7 @@
 ///    key_m(d) > key_m(p) (farther along m), on the circle when equal; d on Ω is inside when
 ///    strictly inside the arc z₁ z₂, on the circle when it is z₁ or z₂; d on side −σ is outside.
 ///    The comparisons with m = ẑ₁ + ẑ₂ take square roots: sign(α√q − β√p) is decided exactly
-///    from the signs of α, β and of α²q − β²p (`detail::sign_of_root_difference`).
+///    from the signs of α, β and of α²q − β²p (`sign_of_root_difference`, sign_sqrt.hpp).
 ///  - *flat faces* (orient(a, b, c) = 0 with an antipodal pair, the seed's figure 5.18): the
 ///    open hemisphere to the left of their great circle.
 /// POSITIVE inside, ZERO on the circle, NEGATIVE outside. Throws `Undefined` for three points
@@ -40,16 +40,11 @@
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/sign.hpp"
+#include "t2/sign_sqrt.hpp"
 
 namespace t2 {
 
 namespace detail {
-
-/// sign(α·√q − β·√p) for q, p > 0, from sa = sign α, sb = sign β and s2 = sign(α²q − β²p).
-inline Sign sign_of_root_difference(Sign sa, Sign sb, Sign s2) {
-  if (sa != sb) return sa > sb ? POSITIVE : NEGATIVE;
-  return sa * s2;
-}
 
 /// Is the direction [0, u] of `d` strictly nearer in angle than c to the direction u =
 /// (L_x, L_y) of the line a ∨ b (a, b proper, c and d on Ω)? POSITIVE nearer, ZERO as near.
