@@ -5,6 +5,7 @@
 // be that small (see `oracle`).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gmpxx.h>
@@ -211,6 +212,84 @@ TEST(SignOfRootSum, CancellingPolynomialsAgainstTheOracle) {
     }
   }
   std::printf("filter decided %d of %d with A cancelling\n", decided, n);
+}
+
+// Fortune's question: where is the site x = s against a breakpoint of the parabolas of sites p,
+// q above the sweep line y = l? The heights of the two parabolas agree where α x² − 2β x + γ = 0,
+// α = q_y − p_y, β = p_x(q_y − l) − q_x(p_y − l), γ = (q_y − l)(p_x² + p_y² − l²) −
+// (p_y − l)(q_x² + q_y² − l²): at r = (β ± √C)/α, C = β² − αγ, and s − r = (αs − β ∓ √C)/α.
+// A = (αs − β)·w, B = ∓w, with w = 1 the points' weight, so that A² and B²C have degree 6.
+constexpr auto kFortuneA = [](const auto& px, const auto& py, const auto& qx, const auto& qy, const auto& l,
+                              const auto& s, const auto& w) {
+  return ((qy - py) * s - (px * (qy - l) - qx * (py - l))) * w;
+};
+constexpr auto kFortuneMinus = [](const auto&, const auto&, const auto&, const auto&, const auto&, const auto&,
+                                  const auto& w) { return -w; };
+constexpr auto kFortunePlus = [](const auto&, const auto&, const auto&, const auto&, const auto&, const auto&,
+                                 const auto& w) { return w; };
+constexpr auto kFortuneC = [](const auto& px, const auto& py, const auto& qx, const auto& qy, const auto& l,
+                              const auto&, const auto&) {
+  const auto beta = px * (qy - l) - qx * (py - l);
+  const auto gamma = (qy - l) * (px * px + py * py - l * l) - (py - l) * (qx * qx + qy * qy - l * l);
+  return beta * beta - (qy - py) * gamma;
+};
+
+/// sign(s − r) for the root r = (β + √C)/α (`plus`) or (β − √C)/α, from sign_of_root_sum.
+Sign side_of_breakpoint(double px, double py, double qx, double qy, double l, double s, bool plus) {
+  const Sign sa = sign_of(qy - py);  // the difference of two doubles has the exact sign
+  return sa * (plus ? sign_of_root_sum(kFortuneA, kFortuneMinus, kFortuneC, px, py, qx, qy, l, s, 1.0)
+                    : sign_of_root_sum(kFortuneA, kFortunePlus, kFortuneC, px, py, qx, qy, l, s, 1.0));
+}
+
+/// The same from the parabolas only, in exact rationals: h(x) = ((x − p_x)² + p_y² − l²)/(2(p_y − l))
+/// is p's parabola; h_p − h_q has the sign of α (x − r₁)(x − r₂) (p_y, q_y > l), which is
+/// negative between the roots when α > 0. The vertex v = β/α of that quadratic lies between them.
+Sign side_of_breakpoint_oracle(double px, double py, double qx, double qy, double l, double s, bool plus) {
+  const mpq_class Px(px), Py(py), Qx(qx), Qy(qy), L(l), S(s);
+  const mpq_class hp = ((S - Px) * (S - Px) + Py * Py - L * L) / (2 * (Py - L));
+  const mpq_class hq = ((S - Qx) * (S - Qx) + Qy * Qy - L * L) / (2 * (Qy - L));
+  const int sa = sgn(mpq_class(Qy - Py)), sq = sgn(mpq_class(hp - hq));
+  const int sv = sgn(mpq_class(S - (Px * (Qy - L) - Qx * (Py - L)) / (Qy - Py)));  // sign(s − v)
+  const int sr = plus ? sa : -sa;  // sign(r − v): r₂ lies beyond v on the side of sign(α)
+  if (sq == 0) return static_cast<Sign>(sv == sr ? 0 : -sr);  // s is r, or the other root
+  if (sq != sa) return static_cast<Sign>(-sr);                 // between the roots
+  return static_cast<Sign>(sv);                                 // beyond both, on the side of v
+}
+
+TEST(SignOfRootSum, FortuneBreakpointsAgainstTheParabolas) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> small(-8, 8), drop(1, 4);
+  int ties = 0;
+  for (int i = 0; i < 4000 * scale(); ++i) {
+    double px, py, qx, qy, l, s;
+    if (i % 3 == 0) {  // small integers: many exact ties
+      px = small(rng), py = small(rng), qx = small(rng), qy = small(rng), s = small(rng) / 2.0;
+      l = std::min(py, qy) - drop(rng);
+    } else if (i % 3 == 1) {  // a breakpoint b built first: p, q at distance 65k = b_y − l from b
+      const int k = 1 + static_cast<int>(rng() % 1000), triples[][2] = {{16, 63}, {33, 56}, {39, 52}, {25, 60}};
+      const double bx = small(rng) * 1e3 + 0.5, by = small(rng);
+      const auto* tp = triples[rng() % 4];
+      const auto* tq = triples[rng() % 4];
+      const int sp = (rng() & 1) ? 1 : -1, sq = (rng() & 1) ? 1 : -1, flip = (rng() & 1);
+      px = bx + sp * k * tp[flip], py = by + (rng() & 1 ? 1 : -1) * k * tp[1 - flip];
+      qx = bx + sq * k * tq[1 - flip], qy = by + (rng() & 1 ? 1 : -1) * k * tq[flip];
+      l = by - 65.0 * k, s = bx;
+    } else {  // random doubles
+      px = random_double(rng, 53, -10, 10), py = random_double(rng, 53, -10, 10);
+      qx = random_double(rng, 53, -10, 10), qy = random_double(rng, 53, -10, 10);
+      s = random_double(rng, 53, -10, 10), l = std::min(py, qy) - random_double(rng, 53, -10, 10);
+      if (rng() & 1) px = -px, s = -s;
+    }
+    if (py == qy || (px == qx && py == qy) || !(l < py && l < qy)) continue;
+    for (const bool plus : {false, true}) {
+      const Sign expected = side_of_breakpoint_oracle(px, py, qx, qy, l, s, plus);
+      ties += expected == ZERO;
+      EXPECT_EQ(side_of_breakpoint(px, py, qx, qy, l, s, plus), expected)
+          << "p = (" << px << ", " << py << "), q = (" << qx << ", " << qy << "), l = " << l << ", s = " << s;
+    }
+  }
+  std::printf("%d exact ties among the breakpoints\n", ties);
+  EXPECT_GT(ties, 1000 * scale());
 }
 
 TEST(SignOfRootSum, BigIntegers) {

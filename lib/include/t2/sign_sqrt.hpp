@@ -43,8 +43,8 @@
 /// U' = fl(fl(y'·y')·z') ≤ B²C(1 + u)⁴, and U' > fl(L'·K) proves B²C > A² since K(1 − u) ≥
 /// (1 + u)⁴/(1 − u)³ as well: the sign of B. The code checks that every product these bounds use
 /// (L, fl(y·y), U, V; L', fl(y'·y'), U', fl(L'·K)) is normal and finite, else it does not
-/// decide (an infinite x, y or z makes its products infinite). A² = B²C is never certified: a zero goes to the exact stage, as does every sign the fast path
-/// of A, B or C could not certify.
+/// decide (an infinite x, y or z makes its products infinite). A² = B²C is never certified: a
+/// zero goes to the exact stage, as does every sign the fast path of A, B or C could not certify.
 ///
 /// On `Integer` coordinates there is no separate fast path: each `sign_of_poly` of the rule runs
 /// filter.hpp's filters for big integers.
