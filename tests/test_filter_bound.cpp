@@ -275,5 +275,47 @@ TEST(CompareDistanceDouble, SweepAndAngleRulesNearTies) {
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// A polynomial that varies with a parameter, written the legal way (filter.hpp, bound_of): one
+// lambda without captures per parameter value, so each gets the bound of its own polynomial. A
+// capturing lambda reading n would share one bound between all n (tests/compile_fail).
+
+template <int N, class T>
+constexpr auto power(const T& x) {
+  if constexpr (N == 1) {
+    return x;
+  } else {
+    return x * power<N - 1>(x);
+  }
+}
+template <int N>
+constexpr auto power_difference = [](const auto& x, const auto& y) { return power<N>(x) - power<N>(y); };
+
+template <int N>
+void expect_power_difference_exact(std::mt19937_64& rng) {
+  constexpr auto b = detail::derive_bound<double, double>(power_difference<N>);
+  static_assert(b.total == N && b.count == 2 && b.c < HUGE_VAL);  // its own degree, not the first n's
+  std::uniform_int_distribution<int> e(-100 / N, 100 / N);
+  for (int i = 0; i < 2000 * scale(); ++i) {
+    const double y = std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng), e(rng));
+    double x = y;  // x within a few ulps of y, or of a tiny or huge y, or far
+    for (int k = std::uniform_int_distribution<int>(-3, 3)(rng); k != 0; k += k > 0 ? -1 : 1)
+      x = std::nextafter(x, k > 0 ? HUGE_VAL : 0.0);
+    if (i % 5 == 0) x = std::ldexp(x, e(rng));
+    if (i % 7 == 0) x = -x;
+    Rational xn = 1, yn = 1;
+    for (int k = 0; k < N; ++k) xn *= q(x), yn *= q(y);
+    EXPECT_EQ(sign_of_poly(power_difference<N>, x, y), static_cast<Sign>(sgn(Rational(xn - yn))))
+        << "n = " << N << ", x = " << x << ", y = " << y;
+  }
+}
+
+TEST(FilterBound, OneLambdaWithoutCapturesPerParameterAgreesWithRationals) {
+  std::mt19937_64 rng(23);
+  expect_power_difference_exact<1>(rng);  // the order of the first call does not matter:
+  expect_power_difference_exact<5>(rng);  // each n has its own type and its own bound
+  expect_power_difference_exact<3>(rng);
+}
+
 }  // namespace
 }  // namespace t2

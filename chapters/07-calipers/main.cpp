@@ -67,7 +67,7 @@ void polygon_hull() {
 void calipers() {
   std::cout << "== antipodal pairs, diameter, width\n";
   //> calipers-demo
-  const std::vector<Point> H = chapter07::hexagon();  // two of its edges are parallel
+  const std::vector<Point> H = chapter07::hexagon();  // three pairs of parallel edges
   const std::vector<std::size_t> all{0, 1, 2, 3, 4, 5};
   std::cout << "antipodal pairs:";
   for (const auto& [a, b] : t2::antipodal_pairs(H, all))

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <system_error>
 
-#include "t2/draw/palette.hpp"
+#include "t2/scene_colors.hpp"
 #include "t2/error.hpp"
 #include "t2/number.hpp"
 
@@ -28,7 +28,7 @@ std::string_view name(SceneKind k) {
 
 namespace {
 
-namespace palette = t2::draw::palette;
+namespace colors = t2::scene_colors;
 
 [[noreturn]] void bad(const std::string& message) { throw BadInput(message); }
 
@@ -58,18 +58,18 @@ bool hex_digit(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')
 
 std::string colour_names() {
   std::string s;
-  for (const auto& n : palette::names) s += fmt::format("{}{}", s.empty() ? "" : ", ", n.name);
+  for (const auto& n : colors::names) s += fmt::format("{}{}", s.empty() ? "" : ", ", n.name);
   return s;
 }
 
-// "#rrggbb" (lower-cased) or a palette name.
+// "#rrggbb" (lower-cased) or a scene colour name.
 std::string colour(std::string_view key, std::string_view v) {
   if (v.size() == 7 && v[0] == '#' && std::all_of(v.begin() + 1, v.end(), hex_digit)) {
     std::string s(v);
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
   }
-  if (const char* rgb = palette::named(v)) return rgb;
+  if (const char* rgb = colors::named(v)) return rgb;
   bad(fmt::format("{}={}: not a colour; write #rrggbb or one of {}", key, shown(v), colour_names()));
 }
 
@@ -175,9 +175,9 @@ void over(std::optional<T>& to, const std::optional<T>& from) {
 
 std::string number_text(double v) { return to_string(v); }
 
-// A colour by its palette name when it has one ("green", not "#2ca02c").
+// A colour by its scene name when it has one ("green", not "#2ca02c").
 std::string colour_text(const std::string& rgb) {
-  for (const auto& n : palette::names)
+  for (const auto& n : colors::names)
     if (rgb == n.rgb) return n.name;
   return rgb;
 }

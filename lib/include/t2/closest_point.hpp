@@ -38,7 +38,10 @@ BasicPoint<T> closest_point_on_segment(const BasicPoint<T>& a, const BasicPoint<
                   (a.w * b.y - b.w * a.y) * (a.w * b.y - b.w * a.y));
   };
   //< closest-polys
-  auto DminusN = [&](const auto& u, const auto& v, const auto& r) { return D(u, v, r) - N(u, v, r); };
+  // No captures (filter.hpp, bound_of): D and N are stateless, so their types' objects are them.
+  auto DminusN = [](const auto& u, const auto& v, const auto& r) {
+    return decltype(D){}(u, v, r) - decltype(N){}(u, v, r);
+  };
   const auto args = [&](auto&& f) { return sign_of_poly(f, a, b, q); };
   auto evaluate = [&](auto&& f) -> T {  // gmpxx temporaries must not outlive the lambda
     if constexpr (std::is_same_v<T, double>) {

@@ -103,7 +103,7 @@ namespace detail {
 /// vectors a, c and b, c of R³. NEGATIVE when ∠(a o c) < ∠(b o c).
 template <class T>
 Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
-  auto dot = [](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x + p.y * q.y; };
+  static constexpr auto dot = [](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x + p.y * q.y; };
   const Sign sp = sign_of_poly(dot, a, c);
   const Sign sq = sign_of_poly(dot, b, c);
   // The angle shrinks as cos = (v.c)/(|v||c|) grows; compare (a.c)/|a| with (b.c)/|b|.
@@ -111,7 +111,7 @@ Sign compare_angles_at_origin(const BasicPoint<T>& a, const BasicPoint<T>& b, co
   if (sp == ZERO) return ZERO;
   // Same strict sign: compare (a.c)^2 |b|^2 with (b.c)^2 |a|^2.
   const Sign e = sign_of_poly(
-      [dot](const auto& u, const auto& v, const auto& r) {
+      [](const auto& u, const auto& v, const auto& r) {  // no captures (filter.hpp, bound_of)
         const auto p = dot(u, r), q = dot(v, r);
         return p * p * dot(v, v) - q * q * dot(u, u);
       },

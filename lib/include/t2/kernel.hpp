@@ -20,5 +20,7 @@
 #include "t2/isorect.hpp"
 #include "t2/bbox.hpp"
 #include "t2/circle.hpp"
+#include "t2/polyhedron.hpp"
 #include "t2/io.hpp"
 #include "t2/scene.hpp"
+#include "t2/scene_colors.hpp"

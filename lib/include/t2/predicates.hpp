@@ -11,6 +11,8 @@
 /// - distance.hpp: `compare_distance`, `compare_distance_values` (§4.3.1);
 /// - lexicographic.hpp: `compare_lexicographic`, `compare_xy`, `compare_along_line` (§4.3.3);
 /// - angle.hpp: the comparisons of directions.
+/// - sign_sqrt.hpp: `sign_of_root_sum` (the sign of A + B√C for polynomials A, B, C),
+///   `sign_of_root_difference`.
 ///
 /// On `double` coordinates each has a fast path of plain double arithmetic with an error bound
 /// proven in its header, and exact stages (expansion.hpp, then GMP where expansions cannot go).
@@ -23,3 +25,4 @@
 #include "t2/orient.hpp"
 #include "t2/orient3d.hpp"
 #include "t2/point.hpp"
+#include "t2/sign_sqrt.hpp"

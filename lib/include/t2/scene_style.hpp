@@ -11,7 +11,7 @@
 /// its interactive editor and have no meaning here.
 ///
 /// The values are checked here, in the kernel (no drawing): colours are resolved to "#rrggbb"
-/// through the names of `t2/draw/palette.hpp`; `t2::draw::add_scene` turns them into a
+/// through the names of `t2/scene_colors.hpp`; `t2::draw::add_scene` turns them into a
 /// `t2::draw::Style`.
 
 #include <optional>

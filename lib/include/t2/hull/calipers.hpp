@@ -63,19 +63,20 @@ inline Sign compare_pair_distances(const Point& a, const Point& b, const Point& 
 // dist² = Δ(a, b, q)² / (q_w² L(a, b)), L(a, b) = |B − A|² (a_w b_w)², cross-multiplied.
 inline Sign compare_line_distances(const Point& a, const Point& b, const Point& q, const Point& a2, const Point& b2,
                                    const Point& q2) {
-  const auto term = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-                       const auto& qw, const auto& qx, const auto& qy, const auto& ow) {
+  static constexpr auto term = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx,
+                                  const auto& by, const auto& qw, const auto& qx, const auto& qy, const auto& ow) {
     const auto det = aw * (bx * qy - by * qx) - ax * (bw * qy - by * qw) + ay * (bw * qx - bx * qw);
     return det * det * ow * ow;  // Δ² times the other q_w²
   };
-  const auto len = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by) {
+  static constexpr auto len = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx,
+                                 const auto& by) {
     const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
     return ux * ux + uy * uy;
   };
   return sign_of_poly(
-      [&](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-          const auto& qw, const auto& qx, const auto& qy, const auto& cw, const auto& cx, const auto& cy,
-          const auto& dw, const auto& dx, const auto& dy, const auto& rw, const auto& rx, const auto& ry) {
+      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
+         const auto& qw, const auto& qx, const auto& qy, const auto& cw, const auto& cx, const auto& cy,
+         const auto& dw, const auto& dx, const auto& dy, const auto& rw, const auto& rx, const auto& ry) {
         return term(aw, ax, ay, bw, bx, by, qw, qx, qy, rw) * len(cw, cx, cy, dw, dx, dy) -
                term(cw, cx, cy, dw, dx, dy, rw, rx, ry, qw) * len(aw, ax, ay, bw, bx, by);
       },

@@ -1,8 +1,8 @@
 #pragma once
 /// @file polyhedron.hpp
-/// @brief Polyhedra of R³ as face lists (seed 004 §6.1): the vertices, and each face as the
-/// cycle of its vertex indices, counter-clockwise seen from outside. Euler's formula and exact
-/// certificates of a closed surface and of a convex polyhedron.
+/// @brief Polyhedra of R³ as face lists (seed 004 §6.1; the type `Polyhedron` is in the kernel,
+/// t2/polyhedron.hpp): Euler's formula and exact certificates of a closed surface and of a
+/// convex polyhedron.
 ///
 /// A face list holds one kind of adjacency only (vertices of a face); the others — the faces
 /// around a vertex, the faces across the edges of a face — take a search of the whole list.
@@ -15,15 +15,9 @@
 #include <vector>
 
 #include "t2/orient3d.hpp"
+#include "t2/polyhedron.hpp"
 
 namespace t2 {
-
-/// A polyhedron as a face list: `faces[f]` lists indices into `vertices`, counter-clockwise
-/// seen from outside (so the outward normal is (v₁ − v₀) × (v₂ − v₀) for a convex face).
-struct Polyhedron {
-  std::vector<Point3> vertices;                   ///< the vertices
-  std::vector<std::vector<std::uint32_t>> faces;  ///< each face, counter-clockwise from outside
-};
 
 /// An undirected edge (smaller index first).
 using Edge3 = std::array<std::uint32_t, 2>;

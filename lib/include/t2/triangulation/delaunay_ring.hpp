@@ -27,6 +27,7 @@
 
 #include "t2/angle.hpp"
 #include "t2/point.hpp"
+#include "t2/sign_sqrt.hpp"
 #include "t2/triangulation/face_disk.hpp"
 #include "t2/triangulation/triangulation.hpp"
 

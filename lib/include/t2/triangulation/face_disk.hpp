@@ -28,7 +28,7 @@
 ///    key_m(d) > key_m(p) (farther along m), on the circle when equal; d on Ω is inside when
 ///    strictly inside the arc z₁ z₂, on the circle when it is z₁ or z₂; d on side −σ is outside.
 ///    The comparisons with m = ẑ₁ + ẑ₂ take square roots: sign(α√q − β√p) is decided exactly
-///    from the signs of α, β and of α²q − β²p (`detail::sign_of_root_difference`).
+///    from the signs of α, β and of α²q − β²p (`sign_of_root_difference`, sign_sqrt.hpp).
 ///  - *flat faces* (orient(a, b, c) = 0 with an antipodal pair, the seed's figure 5.18): the
 ///    open hemisphere to the left of their great circle.
 /// POSITIVE inside, ZERO on the circle, NEGATIVE outside. Throws `Undefined` for three points
@@ -40,27 +40,22 @@
 #include "t2/orient.hpp"
 #include "t2/point.hpp"
 #include "t2/sign.hpp"
+#include "t2/sign_sqrt.hpp"
 
 namespace t2 {
 
 namespace detail {
 
-/// sign(α·√q − β·√p) for q, p > 0, from sa = sign α, sb = sign β and s2 = sign(α²q − β²p).
-inline Sign sign_of_root_difference(Sign sa, Sign sb, Sign s2) {
-  if (sa != sb) return sa > sb ? POSITIVE : NEGATIVE;
-  return sa * s2;
-}
-
 /// Is the direction [0, u] of `d` strictly nearer in angle than c to the direction u =
 /// (L_x, L_y) of the line a ∨ b (a, b proper, c and d on Ω)? POSITIVE nearer, ZERO as near.
 inline Sign nearer_to_pole(const Point& a, const Point& b, const Point& c, const Point& d) {
   // u·v = (a_y b_w − a_w b_y) v_x + (a_w b_x − a_x b_w) v_y; compare u·d/|d| with u·c/|c|.
-  const auto dot = [](const auto& p, const auto& q, const auto& v) {
+  static constexpr auto dot = [](const auto& p, const auto& q, const auto& v) {
     return (p.y * q.w - p.w * q.y) * v.x + (p.w * q.x - p.x * q.w) * v.y;
   };
   const Sign sa = sign_of_poly(dot, a, b, d), sb = sign_of_poly(dot, a, b, c);
   const Sign s2 = sign_of_poly(
-      [&](const auto& p, const auto& q, const auto& v, const auto& z) {
+      [](const auto& p, const auto& q, const auto& v, const auto& z) {
         const auto al = dot(p, q, v), be = dot(p, q, z);
         return al * al * (z.x * z.x + z.y * z.y) - be * be * (v.x * v.x + v.y * v.y);
       },
@@ -94,12 +89,12 @@ inline Sign in_omega_pair_disk(const Point& p, const Point& z1, const Point& z2,
   }
   if (sd != sigma) return NEGATIVE;
   // key_m(d) − key_m(p) ∝ σ m·v, v = d_xy p_w − p_xy d_w; m·v ∝ (v·z1)|z2| + (v·z2)|z1|.
-  const auto vz = [](const auto& q, const auto& e, const auto& z) {
+  static constexpr auto vz = [](const auto& q, const auto& e, const auto& z) {
     return (e.x * q.w - q.x * e.w) * z.x + (e.y * q.w - q.y * e.w) * z.y;
   };
   const Sign sa = sign_of_poly(vz, p, d, z1), sb = -sign_of_poly(vz, p, d, z2);
   const Sign s2 = sign_of_poly(
-      [&](const auto& q, const auto& e, const auto& y1, const auto& y2) {
+      [](const auto& q, const auto& e, const auto& y1, const auto& y2) {
         const auto a1 = vz(q, e, y1), a2 = vz(q, e, y2);
         const auto n1 = y1.x * y1.x + y1.y * y1.y, n2 = y2.x * y2.x + y2.y * y2.y;
         return a1 * a1 * n2 - a2 * a2 * n1;
