@@ -6,6 +6,7 @@
 #include <sched.h>
 #include <seccomp.h>
 #include <sys/mman.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -30,7 +31,8 @@ constexpr const char* kDenied[] = {
     "bpf", "keyctl", "add_key", "request_key", "pivot_root", "chroot", "kexec_load",
     "kexec_file_load", "init_module", "finit_module", "delete_module", "perf_event_open",
     "userfaultfd", "fsopen", "fsmount", "fsconfig", "move_mount", "open_tree", "mount_setattr",
-    "process_vm_readv", "process_vm_writev", "swapon", "swapoff", "reboot", "acct", "quotactl"};
+    "process_vm_readv", "process_vm_writev", "swapon", "swapoff", "reboot", "acct", "quotactl",
+    "io_uring_setup", "io_uring_enter", "io_uring_register"};  // io_uring: system calls no filter sees
 
 // The seccomp program (BPF), built once with libseccomp.
 const std::string& seccomp_program() {
@@ -47,6 +49,8 @@ const std::string& seccomp_program() {
                                CLONE_NEWUTS, CLONE_NEWCGROUP})
       seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag));
     seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
+    // Netlink sockets talk to the kernel's configuration (routes, audit, uevents ...).
+    seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(socket), 1, SCMP_A0(SCMP_CMP_EQ, AF_NETLINK));
     const int fd = memfd_create("t2-seccomp", MFD_CLOEXEC);
     std::string bytes;
     if (fd >= 0 && seccomp_export_bpf(ctx, fd) == 0 && lseek(fd, 0, SEEK_SET) == 0) {
@@ -223,6 +227,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   const std::string secrets_ok = fmt::format("{}/{}", secrets.size(), secrets.size());
   s.works = res.ok() && f["uid"] != "" && f["uid"] != "0" && f["caps"] == "none" && f["write_usr"] == "no" &&
             f["remount_usr"] == "no" && f["new_userns"] == "no" && f["network_interfaces"] == "0" &&
+            f["io_uring"] == "no" && f["netlink"] == "no" &&
             f["secrets_unreadable"] == secrets_ok;
   if (!res.ok()) {
     s.mode = "bubblewrap does not work here: " + (res.error.empty() ? res.err.substr(0, 300) : res.error);
@@ -231,9 +236,10 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
     s.mode = fmt::format("bubblewrap as uid {}{}", f["uid"], running_as_root() ? " (setpriv from root)" : "");
     s.description = fmt::format(
         "{}; probed inside: capabilities {}, seccomp {}, /usr writable {}, remount {}, new user "
-        "namespace {}, network interfaces {}, hidden files unreadable {}, /tmp tmpfs {} MB, process limit {}",
+        "namespace {}, network interfaces {}, io_uring {}, netlink {}, hidden files unreadable {}, /tmp "
+        "tmpfs {} MB, process limit {}",
         s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
-        f["network_interfaces"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
+        f["network_interfaces"], f["io_uring"], f["netlink"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
     s.description += prepared.tree_limits.empty() ? "; no cgroup (per-process limits only)"
                                                   : "; a cgroup for the whole tree of each run (the probe run's: " + prepared.tree_limits + ")";
     if (!s.works) s.description = "UNSAFE sandbox, student code is not run: " + s.description;
