@@ -87,9 +87,9 @@ unsigned long sandbox_uid_of(const Results& r) {
 
 // A hostile submission scores exactly what the honest stub scores, test by test; hidden tests
 // say only how they ended; the host is left as it was.
-void expect_like_stub(const fs::path& submission) {
+void expect_like_stub(const fs::path& submission, Results& r) {
   const HostState before = HostState::now();
-  const Results r = grade(kTool, "01", submission, "--time-limit 1");
+  r = grade(kTool, "01", submission, "--time-limit 1");
   ASSERT_EQ(r.tests.size(), 8u);
   EXPECT_EQ(r.score, 0) << r.raw.substr(0, 3000);
   for (const auto& t : r.tests) {
@@ -125,7 +125,25 @@ std::vector<std::string> hostile_names() {
 class Hostile : public ::testing::TestWithParam<std::string> {};
 
 // Every submission of exercises/_hostile/ (see its README): the attacks of issue 10 and before.
-TEST_P(Hostile, ScoresWhatTheStubScoresAndLeavesNothing) { expect_like_stub(kHostile / GetParam()); }
+// The submissions that give right answers through the library: refused by name, not by result
+// (issue 12: directly and behind macros; issue 29: t2::operator== instantiated on big
+// integers, t2::antipode behind a template argument of 8192 characters, a t2::collinear whose
+// name carries an ABI tag).
+const std::map<std::string, std::vector<std::string>> kRefusedNaming = {
+    {"forbidden-direct", {"t2::antipode", "t2::operator=="}},
+    {"forbidden-macro", {"t2::antipode", "t2::operator=="}},
+    {"operator-on-exact", {"t2::operator=="}},
+    {"long-template-argument", {"t2::antipode"}},
+    {"abi-tag", {"t2::collinear"}}};
+
+TEST_P(Hostile, ScoresWhatTheStubScoresAndLeavesNothing) {
+  Results r;
+  expect_like_stub(kHostile / GetParam(), r);
+  if (const auto it = kRefusedNaming.find(GetParam()); it != kRefusedNaming.end()) {
+    EXPECT_NE(r.output.find("your code calls "), std::string::npos) << r.output;
+    for (const auto& name : it->second) EXPECT_NE(r.output.find(name), std::string::npos) << name << ": " << r.output;
+  }
+}
 
 INSTANTIATE_TEST_SUITE_P(All, Hostile, ::testing::ValuesIn(hostile_names()),
                          [](const ::testing::TestParamInfo<std::string>& i) {
@@ -157,28 +175,6 @@ TEST(GraderHostile, DoesNotCompile) {
   for (const auto& t : r.tests) EXPECT_NE(t.output.find("does not compile"), std::string::npos) << t.output;
   EXPECT_NE(r.output.find("error"), std::string::npos) << "the compiler's message is shown: " << r.output;
   EXPECT_NE(r.output.find("classify.cpp:4"), std::string::npos) << r.output;
-}
-
-TEST(GraderHostile, ForbiddenNamesAreReadFromTheObjectEvenBehindMacros) {
-  // Both give right answers through the library: refused by name, not by result.
-  for (const char* s : {"forbidden-direct", "forbidden-macro"}) {
-    const Results r = grade(kTool, "01", kHostile / s);
-    EXPECT_EQ(r.score, 0) << s;
-    EXPECT_NE(r.output.find("t2::antipode"), std::string::npos) << s << ": " << r.output;
-    EXPECT_NE(r.output.find("t2::operator=="), std::string::npos) << s << ": " << r.output;
-  }
-}
-
-TEST(GraderHostile, ForbiddenNamesAreReadWholeWithOperatorsAndAbiTags) {
-  // Issue 29: t2::operator== instantiated on big integers, t2::antipode behind a template
-  // argument of 8192 characters, a t2::collinear with an ABI tag. All right answers, all
-  // refused by name.
-  for (const auto& [s, name] : std::vector<std::pair<std::string, std::string>>{
-           {"operator-on-exact", "t2::operator=="}, {"long-template-argument", "t2::antipode"}, {"abi-tag", "t2::collinear"}}) {
-    const Results r = grade(kTool, "01", kHostile / s);
-    EXPECT_EQ(r.score, 0) << s;
-    EXPECT_NE(r.output.find("your code calls " + name), std::string::npos) << s << ": " << r.output;
-  }
 }
 
 TEST(GraderHostile, ADemanglerBombEndsWithANamedVerdictWithinAMinute) {
