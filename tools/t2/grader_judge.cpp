@@ -96,7 +96,7 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
   c.err = t2proc::Stream::discard;
   SandboxRun d;
   d.argv = {"/t2/driver", fmt::format("--t2-calls={}", calls.r), fmt::format("--t2-answers={}", answers.w)};
-  d.read_only = {{driver, "/t2/driver"}};
+  d.copied = {{driver, "/t2/driver"}};  // a copy: no host path in the sandbox's mountinfo
   d.handover_fds = {calls.r, answers.w};
   d.limits.cpu_seconds = cpu_s;
   d.limits.wall_seconds = wall;
