@@ -1,6 +1,7 @@
 // Invariants of every graded exercise (issue 5), checked by running `t2 grade` for real:
 // the reference solution scores full marks, the stub scores 0 on every hidden test, every
-// hidden test fails on at least one of the wrong solutions kept under wrong/, and nothing of the
+// hidden test fails on at least one of the wrong solutions kept under wrong/, the one that throws
+// t2::Undefined for every input scores 0 on every test, and nothing of the
 // hidden tests or reference solution shows up in what a student sees after grading.
 #include <gtest/gtest.h>
 
@@ -127,7 +128,13 @@ TEST_P(Exercise, EveryHiddenTestFailsOnSomeWrongSolution) {
       }
     }
     EXPECT_GE(failed_hidden, 1) << w.path().filename() << " passes every hidden test: it is not wrong, or the tests are weak";
+    if (w.path().filename() == "throws-undefined") {
+      // Issue 29: every test that expects Undefined also checks an input where it is wrong.
+      EXPECT_EQ(r.score, 0) << "throwing t2::Undefined for every input scores";
+      for (const auto& t : r.tests) EXPECT_EQ(t.score, 0) << t.name << " passes when everything throws Undefined";
+    }
   }
+  EXPECT_TRUE(fs::exists(dir / "wrong" / "throws-undefined")) << "every exercise has the wrong solution that always throws Undefined";
   ASSERT_FALSE(hidden.empty());
   for (const auto& h : hidden) EXPECT_TRUE(caught.count(h)) << h << " fails on no wrong solution: it cannot fail";
 }
@@ -136,7 +143,9 @@ TEST_P(Exercise, GradingShowsNothingOfTheHiddenTests) {
   const auto secrets = secret_lines(dir);
   ASSERT_FALSE(secrets.empty());
   std::vector<fs::path> subs = {dir};
-  for (const auto& w : fs::directory_iterator(dir / "wrong")) subs.push_back(w.path());
+  // throws-undefined prints nothing the stub does not (both only throw): not graded twice.
+  for (const auto& w : fs::directory_iterator(dir / "wrong"))
+    if (w.path().filename() != "throws-undefined") subs.push_back(w.path());
   for (const auto& s : subs) {
     const Results r = grade(kTool, GetParam(), s);
     for (const auto& line : secrets) EXPECT_EQ(r.raw.find(line), std::string::npos) << "leaked: " << line;

@@ -31,6 +31,8 @@ TEST(Public, TheSamePointTwice) {
 TEST(Public, AntipodesHaveNoMidpoint) {
   EXPECT_THROW(ex03::midpoint(ExactPoint(1, 2, 3), ExactPoint(-1, -2, -3)), t2::Undefined)
       << "no segment joins p and ¬p (every line through p passes through ¬p)";
+  EXPECT_TRUE(same(ex03::midpoint(ExactPoint(1, 2, 3), ExactPoint(-1, -2, -2)), ExactPoint(0, 0, 1)))
+      << "but a point and a back point that is not its antipode have a midpoint, on Ω";
 }
 
 }  // namespace

@@ -32,6 +32,8 @@ TEST(Public, AcrossInfinity) {
 TEST(Public, AntipodesHaveNoHull) {
   const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(2, 1), Point(-1, -2, -1)};
   EXPECT_THROW(ex06b::hull(P), t2::Undefined) << "p2 is the antipode of p1: no open hemisphere holds them";
+  const std::vector<Point> Q = {Point::cartesian(0, 0), Point::cartesian(2, 1), Point::cartesian(1, 2)};
+  EXPECT_EQ(compare(Q, ex06b::hull(Q), {0, 1, 2}), "") << "without the antipode: a triangle";
 }
 
 }  // namespace

@@ -30,6 +30,8 @@ TEST(Public, ADirectionAtInfinity) {
 TEST(Public, BothSides) {
   const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(4, 0), Point(-1, -1, -3)};
   EXPECT_THROW(ex07::width(P), t2::Undefined) << "a strip lies on one side of T²";
+  const std::vector<Point> F = {Point::cartesian(0, 0), Point::cartesian(4, 0), Point::cartesian(1, 3)};
+  EXPECT_EQ(check(F, ex07::width(F)), "") << "the front points alone have a strip";
 }
 
 }  // namespace

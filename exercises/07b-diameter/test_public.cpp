@@ -28,6 +28,8 @@ TEST(Public, FrontAndBack) {
 TEST(Public, TwoPointsOfOmega) {
   const std::vector<Point> P = {Point::cartesian(0, 0), Point(0, 1, 0), Point(0, 0, 1)};
   EXPECT_THROW(ex07b::diameter(P), t2::Undefined) << "two different points of Ω are an angle apart";
+  const std::vector<Point> Q = {Point::cartesian(0, 0), Point(0, 1, 0)};
+  EXPECT_EQ(check(Q, ex07b::diameter(Q)), "") << "one point of Ω is infinitely far from every proper point";
 }
 
 }  // namespace

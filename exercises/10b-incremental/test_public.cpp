@@ -36,6 +36,8 @@ TEST(Public, Random) {
 TEST(Public, Collinear) {
   const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(1, 1), Point::cartesian(3, 3)};
   EXPECT_THROW(ex10b::delaunay(P), t2::Undefined) << "hint: three points on one line have no triangle";
+  const std::vector<Point> Q = {Point::cartesian(0, 0), Point::cartesian(1, 1), Point::cartesian(3, 2)};
+  EXPECT_EQ(ex10btest::check(Q, ex10b::delaunay(Q)), "") << "three points off one line: one triangle";
 }
 
 }  // namespace

@@ -3,16 +3,20 @@
 // line is made of these findings, not of fixed text.
 // Usage: probe SECRET_PATH...   (host paths that must be unreadable, e.g. the hidden tests)
 #include <fcntl.h>
+#include <linux/io_uring.h>
+#include <linux/netlink.h>
 #include <sched.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/statvfs.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -34,6 +38,26 @@ int main(int argc, char** argv) {
   for (std::string l; std::getline(dev, l);)
     if (l.find(':') != std::string::npos && l.find("lo:") == std::string::npos) ++ifaces;
   std::printf("network_interfaces=%d\n", ifaces);
+  // io_uring runs system calls the seccomp filter never sees; netlink talks to the kernel's
+  // configuration. Both must be refused.
+  io_uring_params params{};
+  const long ring = ::syscall(__NR_io_uring_setup, 1, &params);
+  std::printf("io_uring=%s\n", ring >= 0 ? "yes" : "no");
+  const int nl = ::socket(AF_NETLINK, SOCK_RAW, NETLINK_ROUTE);
+  std::printf("netlink=%s\n", nl >= 0 ? "yes" : "no");
+  // Host paths: a mount of a host file system whose source folder is not where it is mounted
+  // (/usr on /usr says nothing; /tmp/t2grade-x/driver.bin on /t2/driver would).
+  int host_paths = 0;
+  std::ifstream mi("/proc/self/mountinfo");
+  for (std::string l; std::getline(mi, l);) {
+    std::istringstream f(l);
+    std::string id, parent, dev, root, point, fstype;
+    f >> id >> parent >> dev >> root >> point;
+    const auto dash = l.find(" - ");
+    if (dash != std::string::npos) std::istringstream(l.substr(dash + 3)) >> fstype;
+    if (root != point && fstype != "tmpfs" && fstype != "proc" && fstype != "devtmpfs" && fstype != "devpts") ++host_paths;
+  }
+  std::printf("host_paths=%d\n", host_paths);
   int unread = 0, total = 0;
   for (int i = 1; i < argc; ++i, ++total)
     if (::open(argv[i], O_RDONLY) < 0) ++unread;

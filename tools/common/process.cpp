@@ -341,4 +341,40 @@ std::vector<Result> run_all(const std::vector<Spec>& specs, int jobs) {
   return results;
 }
 
+RemoveWhenGone::RemoveWhenGone(const std::filesystem::path& folder) {
+  int p[2];
+  if (pipe2(p, O_CLOEXEC) != 0) return;
+  // Prepared before fork: after it the child makes async-signal-safe calls only.
+  const std::string script = "sleep 1; exec rm -rf -- \"$1\"", path = folder.string();
+  const char* argv[] = {"/bin/sh", "-c", script.c_str(), "t2-cleanup", path.c_str(), nullptr};
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::setsid();
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) ::signal(sig, SIG_IGN);
+    const int keep[] = {p[0]};
+    close_others(0, keep, 1);
+    char c;
+    ssize_t n;
+    while ((n = ::read(p[0], &c, 1)) < 0 && errno == EINTR) {
+    }
+    if (n == 0) ::execv(argv[0], const_cast<char* const*>(argv));  // the caller is gone
+    ::_exit(0);
+  }
+  ::close(p[0]);
+  if (pid < 0) {
+    ::close(p[1]);
+    return;
+  }
+  fd_ = p[1];
+  pid_ = pid;
+}
+
+RemoveWhenGone::~RemoveWhenGone() {
+  if (fd_ < 0) return;
+  ::kill(pid_, SIGKILL);  // our child, not yet waited for: the pid is still its own
+  ::close(fd_);
+  while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+  }
+}
+
 }  // namespace t2proc

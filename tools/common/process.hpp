@@ -76,4 +76,21 @@ Result run(const Spec& spec);
 /// Runs every spec, at most `jobs` at once; results in the order of `specs`.
 std::vector<Result> run_all(const std::vector<Spec>& specs, int jobs);
 
+/// Removes a folder when the caller ends without removing it itself, however it ends (SIGKILL
+/// included): a watcher process in a session of its own (out of reach of signals sent to the
+/// caller's process group) waits on a pipe; end of file there means the caller died, and the
+/// watcher removes the folder (`rm -rf`, after a second for the caller's children to die with
+/// it). The destructor, run once the caller has removed the folder, ends the watcher.
+class RemoveWhenGone {
+ public:
+  explicit RemoveWhenGone(const std::filesystem::path& folder);
+  ~RemoveWhenGone();
+  RemoveWhenGone(const RemoveWhenGone&) = delete;
+  RemoveWhenGone& operator=(const RemoveWhenGone&) = delete;
+
+ private:
+  int fd_ = -1;   // the pipe's write end (close-on-exec)
+  int pid_ = -1;  // the watcher
+};
+
 }  // namespace t2proc

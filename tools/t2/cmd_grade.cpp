@@ -23,18 +23,9 @@ struct Options {
   bool quiet = false;
 };
 
-// "auto": the exercise whose source file the submission holds (for one autograder bundle
-// serving every exercise).
-t2grader::Exercise pick(const fs::path& root, const std::string& name, const fs::path& submission) {
-  if (name != "auto") return t2grader::find_exercise(root, name);
-  for (auto& e : t2grader::all_exercises(root))
-    if (fs::is_regular_file(submission / e.source)) return e;
-  throw UsageError("the submission holds no file of any exercise");
-}
-
 int grade(const Options& o) {
   const fs::path sub = o.submission;
-  const auto ex = pick(t2grader::exercises_root(o.root), o.name, sub);
+  const auto ex = t2grader::find_exercise(t2grader::exercises_root(o.root), o.name);
   t2grader::RunOptions opt;
   opt.include_hidden = true;
   opt.overall_limit = o.overall_limit;
@@ -50,14 +41,14 @@ Action setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Builds the submission (DIR holds the exercise's source file; default: .) in the sandbox\n"
-      "and judges it with the public and hidden tests of exercise NN (or `auto`: the exercise\n"
-      "whose file DIR holds). Each test runs the submission's functions in a sandboxed driver\n"
+      "and judges it with the public and hidden tests of exercise NN (always named: nothing in\n"
+      "the submission chooses the exercise). Each test runs the submission's functions in a sandboxed driver\n"
       "process, with the manifest's time and memory limits; the tests and their oracles run in\n"
       "another process that never links student code and compares the answers, so nothing the\n"
       "submission prints or defines decides a verdict. A submission that does not compile, or\n"
       "calls a forbidden library function, scores 0. Writes Gradescope's results.json to FILE\n"
       "(hidden tests marked `hidden`, or `after_due_date`) and prints a summary.");
-  app.add_option("NN", o->name, "the exercise: NN, NN-slug, a path, or auto")->required();
+  app.add_option("NN", o->name, "the exercise: NN, NN-slug or a path")->required();
   app.add_option("--submission", o->submission, "the submission folder (default: .)")->type_name("DIR");
   app.add_option("--results", o->results, "write Gradescope's results.json here")->type_name("FILE");
   app.add_option("--overall-limit", o->overall_limit, "seconds for the whole run (default 900)")

@@ -88,8 +88,11 @@ int classroom(const fs::path& out) {
 
 int autograder(const fs::path& zip, const std::optional<std::string>& exercise) {
   if (zip.extension() != ".zip") throw t2cli::UsageError("the autograder bundle must be a .zip file");
-  std::string ex = "auto";
-  if (exercise) ex = t2grader::find_exercise(source_root() / "exercises", *exercise).id;
+  // One bundle grades one exercise, named here: nothing in a submission chooses what it is graded as.
+  if (!exercise)
+    throw t2cli::UsageError("an autograder bundle grades one exercise: name it with --exercise NN "
+                            "(one bundle per Gradescope assignment)");
+  const std::string ex = t2grader::find_exercise(source_root() / "exercises", *exercise).id;
   std::string tmpl = (fs::temp_directory_path() / "t2release-XXXXXX").string();
   if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot create a temporary directory");
   const fs::path stage = fs::path(tmpl) / "bundle";
@@ -168,15 +171,15 @@ t2cli::Action setup(CLI::App& app) {
       "  builds with ./build.sh and has `t2 check`. The release is refused (and removed)\n"
       "  if any line of secret exercise content is found anywhere in it.\n"
       "autograder: a Gradescope bundle (setup.sh, run_autograder, the sources with the\n"
-      "  hidden tests) that grades with `t2 grade`, the sandboxed judge. Without --exercise\n"
-      "  it grades the exercise whose file the submission holds.\n"
+      "  hidden tests) that grades the exercise --exercise NN (required) with `t2 grade`,\n"
+      "  the sandboxed judge.\n"
       "classroom: the student tree plus a GitHub Classroom autograding configuration\n"
       "  (.github/classroom/autograding.json) that runs the public tests.");
   app.add_option("KIND", o->kind, "student, autograder or classroom")
       ->required()
       ->check(CLI::IsMember({"student", "autograder", "classroom"}));
   app.add_option("OUT", o->out, "the folder (or OUT.zip for autograder) to write")->required();
-  app.add_option("--exercise", o->exercise, "autograder: the one exercise it grades")->type_name("NN");
+  app.add_option("--exercise", o->exercise, "autograder (required): the one exercise it grades")->type_name("NN");
   app.footer("Exit status: 0 written; 2 bad usage, an existing OUT, or secret content found.");
   return [o] { return release(*o); };
 }

@@ -1,7 +1,9 @@
 #pragma once
 // Reading the student's compiled object, which is untrusted data: a bounds-checked parser of
-// ELF64 relocatable objects that lists section names and symbol names, and the checks built on
-// it (no LTO sections; no reference to a forbidden library name).
+// ELF64 relocatable objects that lists section names and the names symbols stand for, and the
+// checks built on it (no LTO sections; no reference to a forbidden library name). Symbols are
+// read in their mangled form, never demangled: a demangler's output can be exponentially longer
+// than its input, and a hostile symbol of a few hundred bytes would hang the grader.
 
 #include <string>
 #include <vector>
@@ -13,15 +15,15 @@ struct ObjectInfo {
   bool ok = false;                   ///< parsed
   std::string error;                 ///< why not
   std::vector<std::string> sections; ///< section names
-  std::vector<std::string> symbols;  ///< demangled names of every symbol, defined or not
+  std::vector<std::string> symbols;  ///< the qualified name of every symbol, defined or not:
+                                     ///< "t2::operator==" for any t2::operator==<...>(...),
+                                     ///< without template arguments, parameters or ABI tags;
+                                     ///< a C symbol's own name
 };
 
-/// Parses an ELF64 little-endian object from its bytes (never reads outside them).
+/// Parses an ELF64 little-endian object from its bytes (never reads outside them). Names are
+/// read whole, never cut; an object whose names add up to more than 64 MB is not read.
 ObjectInfo read_object(const std::string& bytes);
-
-/// The qualified name of a demangled symbol without return type, template arguments and
-/// parameters: "bool t2::operator==<double>(t2::BasicPoint<double> const&, ...)" → "t2::operator==".
-std::string bare_name(const std::string& demangled);
 
 /// Why the object must be refused (empty when it is acceptable): LTO sections (whose code the
 /// linker plugin would compile), or a symbol whose bare name is, or is a member of, one of

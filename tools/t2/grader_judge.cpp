@@ -5,9 +5,11 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <memory>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -23,13 +25,21 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The run's temporary tree: the grader's and the sandbox user's only (0700, or 0710 with the
+// sandbox user's group when the grader is root and the sandbox another uid), removed at the end
+// of the run, or by a watcher process when the grader is killed.
 struct TempDir {
   fs::path path;
+  std::unique_ptr<t2proc::RemoveWhenGone> guard;
   TempDir() {
     std::string t = (fs::temp_directory_path() / "t2grade-XXXXXX").string();
     if (!mkdtemp(t.data())) throw GraderError("cannot create a temporary directory");
     path = t;
-    fs::permissions(path, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);  // traversable by the sandbox
+    guard = std::make_unique<t2proc::RemoveWhenGone>(path);
+    if (::geteuid() == 0) {
+      if (::chown(path.c_str(), 0, sandbox_uid()) != 0 || ::chmod(path.c_str(), 0710) != 0)
+        throw GraderError("cannot give the temporary directory to the sandbox's group");
+    }
   }
   ~TempDir() {
     std::error_code ec;
@@ -86,7 +96,7 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
   c.err = t2proc::Stream::discard;
   SandboxRun d;
   d.argv = {"/t2/driver", fmt::format("--t2-calls={}", calls.r), fmt::format("--t2-answers={}", answers.w)};
-  d.read_only = {{driver, "/t2/driver"}};
+  d.copied = {{driver, "/t2/driver"}};  // a copy: no host path in the sandbox's mountinfo
   d.handover_fds = {calls.r, answers.w};
   d.limits.cpu_seconds = cpu_s;
   d.limits.wall_seconds = wall;

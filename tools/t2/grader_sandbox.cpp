@@ -6,6 +6,7 @@
 #include <sched.h>
 #include <seccomp.h>
 #include <sys/mman.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -30,7 +31,8 @@ constexpr const char* kDenied[] = {
     "bpf", "keyctl", "add_key", "request_key", "pivot_root", "chroot", "kexec_load",
     "kexec_file_load", "init_module", "finit_module", "delete_module", "perf_event_open",
     "userfaultfd", "fsopen", "fsmount", "fsconfig", "move_mount", "open_tree", "mount_setattr",
-    "process_vm_readv", "process_vm_writev", "swapon", "swapoff", "reboot", "acct", "quotactl"};
+    "process_vm_readv", "process_vm_writev", "swapon", "swapoff", "reboot", "acct", "quotactl",
+    "io_uring_setup", "io_uring_enter", "io_uring_register"};  // io_uring: system calls no filter sees
 
 // The seccomp program (BPF), built once with libseccomp.
 const std::string& seccomp_program() {
@@ -47,6 +49,8 @@ const std::string& seccomp_program() {
                                CLONE_NEWUTS, CLONE_NEWCGROUP})
       seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag));
     seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
+    // Netlink sockets talk to the kernel's configuration (routes, audit, uevents ...).
+    seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(socket), 1, SCMP_A0(SCMP_CMP_EQ, AF_NETLINK));
     const int fd = memfd_create("t2-seccomp", MFD_CLOEXEC);
     std::string bytes;
     if (fd >= 0 && seccomp_export_bpf(ctx, fd) == 0 && lseek(fd, 0, SEEK_SET) == 0) {
@@ -174,6 +178,13 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   a.insert(a.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(r.tmp_bytes), "--tmpfs", "/tmp"});
   for (const auto& [host, inside] : r.read_only) a.insert(a.end(), {"--ro-bind", host.string(), inside.string()});
   for (const auto& [host, inside] : r.writable) a.insert(a.end(), {"--bind", host.string(), inside.string()});
+  std::vector<int> copies;
+  for (const auto& [host, inside] : r.copied) {
+    const int fd = ::open(host.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw GraderError("cannot open " + host.string());
+    copies.push_back(fd);
+    a.insert(a.end(), {"--perms", "0555", "--ro-bind-data", std::to_string(fd), inside.string()});
+  }
   a.insert(a.end(), {"--chdir", r.chdir, "--seccomp", std::to_string(sfd), "--"});
   a.insert(a.end(), r.argv.begin(), r.argv.end());
   t2proc::Spec s;
@@ -191,6 +202,7 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   if (s.limits.processes == 0) s.limits.processes = r.tree_processes;
   s.keep_fds = r.handover_fds;
   s.keep_fds.push_back(sfd);
+  s.keep_fds.insert(s.keep_fds.end(), copies.begin(), copies.end());
   s.close_in_parent = s.keep_fds;
   return {std::move(s), cg, cg ? cg->summary() : std::string()};
 }
@@ -209,7 +221,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   SandboxRun r;
   r.argv = {"/t2/probe"};
   for (const auto& p : secrets) r.argv.push_back(p.string());
-  r.read_only = {{probe, "/t2/probe"}};
+  r.copied = {{probe, "/t2/probe"}};
   r.limits.wall_seconds = 30;
   r.limits.output_bytes = 8192;
   r.tree_memory_bytes = 256u << 20;
@@ -223,6 +235,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   const std::string secrets_ok = fmt::format("{}/{}", secrets.size(), secrets.size());
   s.works = res.ok() && f["uid"] != "" && f["uid"] != "0" && f["caps"] == "none" && f["write_usr"] == "no" &&
             f["remount_usr"] == "no" && f["new_userns"] == "no" && f["network_interfaces"] == "0" &&
+            f["io_uring"] == "no" && f["netlink"] == "no" && f["host_paths"] == "0" &&
             f["secrets_unreadable"] == secrets_ok;
   if (!res.ok()) {
     s.mode = "bubblewrap does not work here: " + (res.error.empty() ? res.err.substr(0, 300) : res.error);
@@ -231,9 +244,11 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
     s.mode = fmt::format("bubblewrap as uid {}{}", f["uid"], running_as_root() ? " (setpriv from root)" : "");
     s.description = fmt::format(
         "{}; probed inside: capabilities {}, seccomp {}, /usr writable {}, remount {}, new user "
-        "namespace {}, network interfaces {}, hidden files unreadable {}, /tmp tmpfs {} MB, process limit {}",
+        "namespace {}, network interfaces {}, io_uring {}, netlink {}, host paths in mountinfo {}, hidden "
+        "files unreadable {}, /tmp tmpfs {} MB, process limit {}",
         s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
-        f["network_interfaces"], f["secrets_unreadable"], f["tmp_mb"], f["nproc"]);
+        f["network_interfaces"], f["io_uring"], f["netlink"], f["host_paths"], f["secrets_unreadable"],
+        f["tmp_mb"], f["nproc"]);
     s.description += prepared.tree_limits.empty() ? "; no cgroup (per-process limits only)"
                                                   : "; a cgroup for the whole tree of each run (the probe run's: " + prepared.tree_limits + ")";
     if (!s.works) s.description = "UNSAFE sandbox, student code is not run: " + s.description;

@@ -25,6 +25,8 @@ struct SandboxRun {
   std::vector<std::string> argv;                          ///< the command, with paths as seen inside
   std::vector<std::pair<fs::path, fs::path>> read_only;   ///< host path → path inside (read-only)
   std::vector<std::pair<fs::path, fs::path>> writable;    ///< host folder → path inside (compiler output only)
+  std::vector<std::pair<fs::path, fs::path>> copied;      ///< host file → executable copy inside, whose
+                                                          ///< host path /proc/self/mountinfo does not show
   std::string chdir = "/tmp";                             ///< working folder inside
   t2proc::Limits limits;                                  ///< per-process limits and wall clock
   std::uint64_t tree_memory_bytes = 0;                    ///< cgroup memory of the whole tree (0: none)

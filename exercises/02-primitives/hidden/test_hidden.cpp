@@ -53,6 +53,9 @@ TEST(Hidden, ShapeWithPointsAtInfinity) {
 TEST(Hidden, UndefinedForAntipodalEnds) {
   EXPECT_THROW(ex02::shape(Point(-1, 2, 3), Point(1, -2, -3)), t2::Undefined);
   EXPECT_THROW(ex02::shape(Point(0, 1, 2), Point(0, -2, -4)), t2::Undefined);
+  // ... and only then: a positive multiple is the point itself, a nearly antipodal end is fine.
+  EXPECT_TRUE(ex02::shape(Point(-1, 2, 3), Point(-2, 4, 6)) == Shape::point);
+  EXPECT_TRUE(ex02::shape(Point(0, 1, 2), Point(0, -2, -3)) == Shape::at_infinity);
 }
 
 TEST(Hidden, OnePointSegments) {

@@ -72,6 +72,9 @@ TEST(Hidden, EqualPointsAtInfinity) { check(ExactPoint(0, 2, -1), ExactPoint(0, 
 TEST(Hidden, UndefinedCases) {
   EXPECT_THROW(ex03::midpoint(ExactPoint(-1, 2, 3), ExactPoint(2, -4, -6)), t2::Undefined);
   EXPECT_THROW(ex03::midpoint(ExactPoint(0, 1, 0), ExactPoint(0, 0, 1)), t2::Undefined);
+  // ... and only then: nearly antipodal ends, and one point of Ω twice, have a midpoint.
+  check(ExactPoint(-1, 2, 3), ExactPoint(2, -4, -5));
+  check(ExactPoint(0, 1, 0), ExactPoint(0, 3, 0));
 }
 
 TEST(Hidden, RandomAgreesWithOracle) {

@@ -86,11 +86,13 @@ TEST(Hidden, SegmentsThroughInfinity) { random_pairs(5, 3000, -2); }
 TEST(Hidden, AntipodalCopiesDoNotMeet) {
   // cd is the antipodal copy of a segment that crosses ab: drawn, they cross; in T² they do not.
   check(Point(1, 0, 0), Point(1, 2, 0), Point(-1, -1, -1), Point(-1, -1, 1));
+  check(Point(1, 0, 0), Point(1, 2, 0), Point(1, 1, -1), Point(1, 1, 1));  // the copy itself crosses
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> c(-4, 4);
   for (int i = 0; i < 500; ++i) {
     const Point a(1, c(rng), c(rng)), b(1, c(rng), c(rng)), p(1, c(rng), c(rng)), q(1, c(rng), c(rng));
     if (parallel(a, b) || parallel(p, q)) continue;
+    check(a, b, p, q);
     check(a, b, t2::antipode(p), t2::antipode(q));
     check(t2::antipode(a), t2::antipode(b), p, q);
   }

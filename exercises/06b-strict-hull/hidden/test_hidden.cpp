@@ -191,6 +191,7 @@ TEST(Hidden, NoHull) {
     const Point& p = S[g() % S.size()];
     const Point& q = S[g() % S.size()];
     const Point& r = S[g() % S.size()];
+    EXPECT_EQ(compare(S, ex06b::hull(S), want), "") << "before the antipode, round " << round;
     switch (round % 3) {
       case 0: S.push_back(mix(-2, p, 0, p)); break;                    // an antipode
       case 1: S.push_back(mix(-1, p, -2, q)); break;                   // ¬ of a point on a segment

@@ -71,6 +71,7 @@ TEST(Hidden, NoStrip) {
   std::mt19937_64 g(70007);
   for (int round = 0; round < 10; ++round) {
     std::vector<Point> P = side(g, 8, 1);
+    EXPECT_EQ(check(P, ex07::width(P)), "") << "before the last points, round " << round;
     if (round % 2) {
       P.push_back(side(g, 1, -1)[0]);  // one back point
     } else {

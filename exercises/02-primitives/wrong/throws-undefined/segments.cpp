@@ -1,0 +1,23 @@
+// Wrong on purpose: throws t2::Undefined for every input, the answer of a student who read
+// only the "undefined" cases. It must score 0: every test that expects Undefined also checks
+// an input where it must not be thrown.
+#include "segments.hpp"
+
+#include <t2/error.hpp>
+
+namespace ex02 {
+
+Shape shape(const t2::Point& p, const t2::Point& q) {
+  (void)p;
+  (void)q;
+  throw t2::Undefined("shape(): undefined, whatever the input");
+}
+
+bool contains(const t2::Point& p, const t2::Point& q, const t2::Point& r) {
+  (void)p;
+  (void)q;
+  (void)r;
+  throw t2::Undefined("contains(): undefined, whatever the input");
+}
+
+}  // namespace ex02

@@ -1,0 +1,20 @@
+// Wrong on purpose: throws t2::Undefined for every input, the answer of a student who read
+// only the "undefined" cases. It must score 0: every test that expects Undefined also checks
+// an input where it must not be thrown.
+#include "hemisphere.hpp"
+
+#include <t2/error.hpp>
+
+namespace ex06 {
+
+t2::ExactPoint hemisphere(const std::vector<t2::Point>& P) {
+  (void)P;
+  throw t2::Undefined("hemisphere(): undefined, whatever the input");
+}
+
+std::vector<long> witness(const std::vector<t2::Point>& P) {
+  (void)P;
+  throw t2::Undefined("witness(): undefined, whatever the input");
+}
+
+}  // namespace ex06

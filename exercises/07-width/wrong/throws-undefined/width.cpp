@@ -1,0 +1,15 @@
+// Wrong on purpose: throws t2::Undefined for every input, the answer of a student who read
+// only the "undefined" cases. It must score 0: every test that expects Undefined also checks
+// an input where it must not be thrown.
+#include "width.hpp"
+
+#include <t2/error.hpp>
+
+namespace ex07 {
+
+std::vector<long> width(const std::vector<t2::Point>& P) {
+  (void)P;
+  throw t2::Undefined("width(): undefined, whatever the input");
+}
+
+}  // namespace ex07
