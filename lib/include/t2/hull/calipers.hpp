@@ -59,26 +59,30 @@ inline Sign compare_pair_distances(const Point& a, const Point& b, const Point& 
       a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
 }
 
+// The two parts of compare_line_distances' polynomial, at namespace scope so that the
+// polynomial, a lambda without captures (filter.hpp), can call them.
+inline constexpr auto line_distance_term = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw,
+                                              const auto& bx, const auto& by, const auto& qw, const auto& qx,
+                                              const auto& qy, const auto& ow) {
+  const auto det = aw * (bx * qy - by * qx) - ax * (bw * qy - by * qw) + ay * (bw * qx - bx * qw);
+  return det * det * ow * ow;  // Δ² times the other q_w²
+};
+inline constexpr auto line_length2 = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw,
+                                        const auto& bx, const auto& by) {
+  const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
+  return ux * ux + uy * uy;
+};
+
 // The distance from q to the line a b compared with that from q' to a' b' (all front, a ≠ b):
 // dist² = Δ(a, b, q)² / (q_w² L(a, b)), L(a, b) = |B − A|² (a_w b_w)², cross-multiplied.
 inline Sign compare_line_distances(const Point& a, const Point& b, const Point& q, const Point& a2, const Point& b2,
                                    const Point& q2) {
-  static constexpr auto term = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx,
-                                  const auto& by, const auto& qw, const auto& qx, const auto& qy, const auto& ow) {
-    const auto det = aw * (bx * qy - by * qx) - ax * (bw * qy - by * qw) + ay * (bw * qx - bx * qw);
-    return det * det * ow * ow;  // Δ² times the other q_w²
-  };
-  static constexpr auto len = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx,
-                                 const auto& by) {
-    const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
-    return ux * ux + uy * uy;
-  };
   return sign_of_poly(
       [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
          const auto& qw, const auto& qx, const auto& qy, const auto& cw, const auto& cx, const auto& cy,
          const auto& dw, const auto& dx, const auto& dy, const auto& rw, const auto& rx, const auto& ry) {
-        return term(aw, ax, ay, bw, bx, by, qw, qx, qy, rw) * len(cw, cx, cy, dw, dx, dy) -
-               term(cw, cx, cy, dw, dx, dy, rw, rx, ry, qw) * len(aw, ax, ay, bw, bx, by);
+        return line_distance_term(aw, ax, ay, bw, bx, by, qw, qx, qy, rw) * line_length2(cw, cx, cy, dw, dx, dy) -
+               line_distance_term(cw, cx, cy, dw, dx, dy, rw, rx, ry, qw) * line_length2(aw, ax, ay, bw, bx, by);
       },
       a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), q.w(), q.x(), q.y(), a2.w(), a2.x(), a2.y(), b2.w(), b2.x(), b2.y(),
       q2.w(), q2.x(), q2.y());
