@@ -65,6 +65,18 @@ std::vector<std::string> secret_lines(const fs::path& dir) {
   return {s.begin(), s.end()};
 }
 
+// Expects that the grading `r` shows none of `secrets`, and that a hidden test says only how it
+// ended, never its assertions or data.
+void expect_nothing_hidden_shown(const Results& r, const std::vector<std::string>& secrets, const std::string& what) {
+  for (const auto& line : secrets) EXPECT_EQ(r.raw.find(line), std::string::npos) << what << " leaked: " << line;
+  for (const auto& t : r.tests)
+    if (t.visibility != "visible") {
+      EXPECT_TRUE(t.output == "passed" || t.output.find('\n') == std::string::npos) << what << ": " << t.output;
+      EXPECT_EQ(t.output.find("Expected"), std::string::npos) << what << ": " << t.output;
+      EXPECT_EQ(t.output.find("Which is"), std::string::npos) << what << ": " << t.output;
+    }
+}
+
 class Exercise : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
@@ -112,10 +124,15 @@ TEST_P(Exercise, StubScoresZeroOnHiddenTests) {
   EXPECT_EQ(r.score, 0) << "the stub throws 'not implemented yet' everywhere";
 }
 
+// Each wrong solution is graded once, for both what its grading scores and what it shows
+// (GradingShowsNothingOfTheHiddenTests checks the stub's grading the same way).
 TEST_P(Exercise, EveryHiddenTestFailsOnSomeWrongSolution) {
+  const auto secrets = secret_lines(dir);
+  ASSERT_FALSE(secrets.empty());
   std::set<std::string> hidden, caught;
   for (const auto& w : fs::directory_iterator(dir / "wrong")) {
     const Results r = grade(kTool, GetParam(), w.path());
+    expect_nothing_hidden_shown(r, secrets, w.path().filename().string());
     int failed_hidden = 0;
     for (const auto& t : r.tests) {
       if (t.visibility == "visible") continue;
@@ -140,23 +157,10 @@ TEST_P(Exercise, EveryHiddenTestFailsOnSomeWrongSolution) {
 }
 
 TEST_P(Exercise, GradingShowsNothingOfTheHiddenTests) {
+  // The stub's grading here; the wrong solutions' gradings in EveryHiddenTestFailsOnSomeWrongSolution.
   const auto secrets = secret_lines(dir);
   ASSERT_FALSE(secrets.empty());
-  std::vector<fs::path> subs = {dir};
-  // throws-undefined prints nothing the stub does not (both only throw): not graded twice.
-  for (const auto& w : fs::directory_iterator(dir / "wrong"))
-    if (w.path().filename() != "throws-undefined") subs.push_back(w.path());
-  for (const auto& s : subs) {
-    const Results r = grade(kTool, GetParam(), s);
-    for (const auto& line : secrets) EXPECT_EQ(r.raw.find(line), std::string::npos) << "leaked: " << line;
-    for (const auto& t : r.tests)
-      if (t.visibility != "visible") {
-        // What a hidden test says is only how it ended, never its assertions or data.
-        EXPECT_TRUE(t.output == "passed" || t.output.find('\n') == std::string::npos) << t.output;
-        EXPECT_EQ(t.output.find("Expected"), std::string::npos) << t.output;
-        EXPECT_EQ(t.output.find("Which is"), std::string::npos) << t.output;
-      }
-  }
+  expect_nothing_hidden_shown(grade(kTool, GetParam(), dir), secrets, "the stub");
 }
 
 INSTANTIATE_TEST_SUITE_P(All, Exercise, ::testing::ValuesIn(exercise_ids()),
