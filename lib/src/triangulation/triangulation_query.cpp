@@ -28,7 +28,7 @@ void check_planar(const Triangulation& tr, const Point& p, const char* what) {
                            std::to_string(tr.dimension()) + ")");
   if (tr.face_of(Triangulation::infinite) == Triangulation::none)
     throw Undefined(std::string(what) + ": the triangulation covers T2 without a hull (no v-infinity); "
-                    "the planar walk needs a hull (use locate_t2 for T2 input)");
+                    "the planar walk needs a hull");
   if (p.w() <= 0)
     throw Undefined(std::string(what) + ": " + to_string(p) +
                     " is not on the front side (w > 0), which the planar triangulation covers");

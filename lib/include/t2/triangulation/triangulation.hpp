@@ -163,7 +163,8 @@ class Triangulation {
   /// Locates p with the walk below and the exact `orient`, from triangle `hint` (any index:
   /// taken modulo size()). For a triangulation of front points with v∞ (dimension 2) and a front
   /// point p; throws `Undefined` for a point not in front or a triangulation without v∞ (T²
-  /// input: locate_t2.hpp), std::logic_error in dimension < 2.
+  /// input without a hull: its lunes need the sides of antipodal_edge.hpp, which only
+  /// Algorithm 9's walk has so far), std::logic_error in dimension < 2.
   Location locate(const Point& p, Index hint = 0) const;
   /// The vertex nearest to p (exact `compare_distance`; one of the nearest when several tie),
   /// for a *Delaunay* triangulation of front points and a front point p: locate p from `hint`,
