@@ -151,10 +151,22 @@ void Triangulation::renumber_link(const std::vector<Index>& order, std::size_t c
 
 void Triangulation::renumber(std::vector<Index> order, std::span<const Point> input) {
   renumber_indices(order);
-  // Free the sorted copy before the link's new array, and the order before the copy of the
-  // input (`v = {}` would keep the capacity).
+  // Free the sorted copy and the order before the copy of the input (`v = {}` would keep the
+  // capacity). When the order is a permutation of all the points, the link moves in place,
+  // through the cycles of the order (which it uses up); otherwise (divide.hpp's distinct points)
+  // through a second array.
   std::vector<Point>().swap(points_);
-  renumber_link(order, input.size());
+  if (order.size() != input.size()) {
+    renumber_link(order, input.size());
+  } else if (!link_.empty()) {
+    link_.resize(input.size() + 1, none);
+    for (Index k = 0; k < order.size(); ++k)
+      while (order[k] != k) {  // the link at k + 1 goes to order[k] + 1: swap, then follow
+        const Index j = order[k];
+        std::swap(link_[std::size_t(k) + 1], link_[std::size_t(j) + 1]);
+        std::swap(order[k], order[j]);
+      }
+  }
   std::vector<Index>().swap(order);
   points_.assign(input.begin(), input.end());
 }

@@ -51,8 +51,8 @@
 /// walk and the flips then touch memory in order (building on the points in input order instead
 /// saves those 28 bytes but is a fifth slower at 10⁶ points). So, at the end of the insertions:
 ///  - `delaunay(points)`, the caller keeps its vector: 24 + 24 + 4 + 48 + 4 = 104 bytes a point
-///    (the peak); then the copy is freed, the link moved to the input indices (4 more for a
-///    moment), the order freed and the input copied, and 100 remain.
+///    (the peak); then the copy is freed, the link moved to the input indices in place, the
+///    order freed and the input copied, and 100 remain.
 ///  - `delaunay(std::move(points))`, the result takes the caller's vector: the copy in
 ///    insertion order replaces it and is moved back into the input order in place at the end
 ///    (`unpermute`, through a buffer of an eighth of the points), after the link has moved
