@@ -33,13 +33,20 @@ void Triangulation::make_triangle(Index a, Index b, Index c, std::size_t reserve
   link(3 * 1 + 1, 3 * 2 + 0);  // edge (∞, c): opposite b in t1, opposite a in t2
   link(3 * 2 + 1, 3 * 3 + 0);  // edge (a, ∞)... opposite c in t2, opposite b in t3
   dimension_ = 2;
+  link_.assign(points_.size() + 1, none);
+  set_link(a, 0);
+  set_link(b, 0);
+  set_link(c, 0);
+  set_link(infinite, 1);
 }
 
 void Triangulation::make_fan(Index p, const Index* ring, const Index* ext, const Index* tri, int k) {
   for (int m = 0; m < k; ++m) {
     set(tri[m], p, ring[m], ring[(m + 1) % k]);
     link(3 * tri[m], ext[m]);
+    set_link(ring[m], tri[m]);  // ring[m] may have lost the triangle its link named
   }
+  set_link(p, tri[0]);
   for (int m = 0; m < k; ++m) link(3 * tri[m] + 1, 3 * tri[(m + 1) % k] + 2);
 }
 
@@ -81,6 +88,8 @@ void Triangulation::flip(Index t, int i) {
   link(3 * u, dr);
   link(3 * u + 1, rp);
   link(3 * t + 1, 3 * u + 2);  // the new edge p–d
+  set_link(q, t);  // q left u, r left t; p stays in t, d in u
+  set_link(r, u);
 }
 //< flip
 
@@ -103,6 +112,15 @@ void Triangulation::assemble(const std::vector<std::array<Index, 3>>& triangles)
       n_[3 * t + i] = it->second;
     }
   dimension_ = 2;
+  relink();
+}
+
+void Triangulation::relink() {
+  std::size_t top = points_.size();  // the points may come later (divide.hpp assigns first)
+  for (Index v : v_)
+    if (v != infinite && v >= top) top = std::size_t(v) + 1;
+  link_.assign(top + 1, none);
+  for (Index e = 0; e < v_.size(); ++e) link_[v_[e] + 1] = e / 3;
 }
 
 void Triangulation::rename_vertex(Index t, Index from, Index to) {
@@ -112,6 +130,8 @@ void Triangulation::rename_vertex(Index t, Index from, Index to) {
     v_[3 * t + k] = to;
     t = n_[3 * t + next(k)] / 3;
   } while (t != start);
+  set_link(from, none);
+  set_link(to, start);
 }
 
 void Triangulation::renumber_indices(const std::vector<Index>& order) {
@@ -120,16 +140,40 @@ void Triangulation::renumber_indices(const std::vector<Index>& order) {
   for (auto& [d, k] : duplicates_) d = order[d], k = order[k];
 }
 
+void Triangulation::renumber_link(const std::vector<Index>& order, std::size_t count) {
+  if (link_.empty()) return;
+  std::vector<Index> moved(count + 1, none);  // vertex k moves to order[k]
+  moved[0] = link_[0];
+  const std::size_t n = std::min(order.size(), link_.size() - 1);
+  for (std::size_t k = 0; k < n; ++k) moved[std::size_t(order[k]) + 1] = link_[k + 1];
+  link_.swap(moved);
+}
+
 void Triangulation::renumber(std::vector<Index> order, std::span<const Point> input) {
   renumber_indices(order);
-  // Free the order and the sorted copy before the copy (`v = {}` would keep the capacity).
-  std::vector<Index>().swap(order);
+  // Free the sorted copy and the order before the copy of the input (`v = {}` would keep the
+  // capacity). When the order is a permutation of all the points, the link moves in place,
+  // through the cycles of the order (which it uses up); otherwise (divide.hpp's distinct points)
+  // through a second array.
   std::vector<Point>().swap(points_);
+  if (order.size() != input.size()) {
+    renumber_link(order, input.size());
+  } else if (!link_.empty()) {
+    link_.resize(input.size() + 1, none);
+    for (Index k = 0; k < order.size(); ++k)
+      while (order[k] != k) {  // the link at k + 1 goes to order[k] + 1: swap, then follow
+        const Index j = order[k];
+        std::swap(link_[std::size_t(k) + 1], link_[std::size_t(j) + 1]);
+        std::swap(order[k], order[j]);
+      }
+  }
+  std::vector<Index>().swap(order);
   points_.assign(input.begin(), input.end());
 }
 
 void Triangulation::renumber(std::vector<Index> order) {
   renumber_indices(order);
+  renumber_link(order, points_.size());
   unpermute(points_, order);  // order is scratch from here on
 }
 
@@ -216,6 +260,13 @@ std::string Triangulation::validate() const {
     if (steps != count[v]) return "the triangles around vertex " + std::to_string(v) + " are not one cycle";
   }
   if (size() != 2 * std::size_t(vertices) - 4) return "Euler's formula fails: T != 2V - 4";
+  // Invariant 5: the link names a triangle of each vertex, and `none` for the other points.
+  if (link_.size() != points_.size() + 1) return "the vertex link has the wrong size";
+  for (Index v = 0; v <= np; ++v) {
+    const Index id = v == np ? infinite : v, f = face_of(id);
+    if (count[v] == 0 ? f != none : f >= size() || slot(f, id) < 0)
+      return "the link of vertex " + std::to_string(v) + " does not name one of its triangles";
+  }
   if (count[np] == 0 && size() == 0) return "no triangle in dimension 2";
   // No two vertices at the same point.
   std::vector<Index> used;

@@ -44,17 +44,20 @@
 /// along Ω, with the lunes of `in_circle` (incircle.hpp) for faces on both sides). Front
 /// input never takes that path, so its result is the planar one above, unchanged.
 ///
-/// **Memory.** The result holds the points (24 bytes a point) and the triangles (2n − 2 of them
-/// with v∞, Euler's formula for n + 1 vertices, 24 bytes each: 48 a point, reserved once). The
+/// **Memory.** The result holds the points (24 bytes a point), the triangles (2n − 2 of them
+/// with v∞, Euler's formula for n + 1 vertices, 24 bytes each: 48 a point, reserved once) and
+/// the vertex link of triangulation.hpp (4 a point). The
 /// construction adds a copy of the points in insertion order (24) and the order itself (4): the
 /// walk and the flips then touch memory in order (building on the points in input order instead
 /// saves those 28 bytes but is a fifth slower at 10⁶ points). So, at the end of the insertions:
-///  - `delaunay(points)`, the caller keeps its vector: 24 + 24 + 4 + 48 = 100 bytes a point
-///    (the peak); then the order and the copy are freed and the input copied, and 96 remain.
+///  - `delaunay(points)`, the caller keeps its vector: 24 + 24 + 4 + 48 + 4 = 104 bytes a point
+///    (the peak); then the copy is freed, the link moved to the input indices in place, the
+///    order freed and the input copied, and 100 remain.
 ///  - `delaunay(std::move(points))`, the result takes the caller's vector: the copy in
 ///    insertion order replaces it and is moved back into the input order in place at the end
-///    (`unpermute`, through a buffer of an eighth of the points): 24 + 4 + 48 + 3 = 79 bytes a
-///    point at the peak, in about the same time (1 to 6 % more). A caller that needs its points
+///    (`unpermute`, through a buffer of an eighth of the points), after the link has moved
+///    through a second array: 24 + 4 + 48 + 4 + 4 = 84 bytes a point at the peak, in about the
+///    same time (1 to 6 % more). A caller that needs its points
 ///    afterwards reads them in `points()` of the result, the same points at the same indices:
 ///    this is the way to triangulate under 100 bytes a point while keeping the points.
 ///
@@ -286,7 +289,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
 
 /// The same on a vector of points that the result takes over: `points()` of the result holds
 /// them afterwards, in the same order. The construction keeps one copy of the points instead of
-/// two: 79 bytes a point at the peak against 100 (see the file comment), in about the same time.
+/// two: 84 bytes a point at the peak against 104 (see the file comment), in about the same time.
 template <class K = DelaunayKernel>
 Triangulation delaunay_with(std::vector<Point>&& points, K kernel = {}) {
   const std::span<const Point> input(points);

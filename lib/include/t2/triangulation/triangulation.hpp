@@ -10,7 +10,8 @@
 /// `infinite`, and the *half-edge* `twin(3t + i)` = 3t' + j names the triangle t' across the
 /// edge opposite vertex i of t *and* the slot j of t' opposite the same edge, so a flip or a
 /// step of a walk never searches a triangle for its neighbour. 24 bytes per triangle, about two
-/// triangles per point: 48 bytes per point, plus the points (24 bytes each).
+/// triangles per point: 48 bytes per point, plus the points (24 bytes each) and the vertex link
+/// (4 bytes each, invariant 5).
 ///
 /// **Invariants** (checked by `valid()`, which the tests call after every construction):
 ///  1. Every triangle (a, b, c) with three finite vertices turns counter-clockwise:
@@ -31,6 +32,17 @@
 ///     When no hull exists (T² input not in an open hemisphere) there is no v∞ and the finite
 ///     triangles alone form the triangulated sphere, with the same counts (v∞ not counted).
 ///  4. No vertex appears twice (duplicates are merged before they become vertices).
+///  5. *The vertex link*: `face_of(v)` is a triangle that has vertex v (v∞ included), and `none`
+///     for a point that is not a vertex (a merged duplicate, or not inserted yet). Every
+///     operation below keeps it: an insertion sets it for the new point and the ring around
+///     it, a flip for the two vertices that lose a triangle (2 stores), `rename_vertex`,
+///     `renumber`, `assign` and `assemble` for what they change. It costs 4 bytes a point.
+///
+/// **Queries** (triangulation_query.cpp): `edges()`, each undirected edge once as a half-edge;
+/// the *star* of a vertex, `incident_faces(v)` and `neighbors(v)`, counter-clockwise around v
+/// from `face_of(v)` (one step across the edge v → neighbour per triangle, no search);
+/// `locate(p, hint)`, the walk below with the exact orient; `nearest_vertex(p, hint)`, a greedy
+/// walk over neighbours with the exact `compare_distance`.
 ///
 /// **The remembering stochastic walk** (Devillers, Pion and Teillaud, "Walking in a
 /// triangulation", 2002). From a triangle, test the edges other than the one we came through,
@@ -50,7 +62,9 @@
 /// the expected length short on adversarial orders.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <string>
 #include <utility>
@@ -101,6 +115,19 @@ class Triangulation {
   bool is_infinite(Index t) const {
     return v_[3 * t] == infinite || v_[3 * t + 1] == infinite || v_[3 * t + 2] == infinite;
   }
+  /// The half-edge across half-edge h = 3t + i (the same as twin(t, i)).
+  Index twin(Index h) const { return n_[h]; }
+  /// The origin of half-edge h = 3t + i: vertex(t, i + 1) (the edge opposite slot i runs from
+  /// vertex i + 1 to vertex i + 2, counter-clockwise around t).
+  Index org(Index h) const { return v_[h - h % 3 + next(static_cast<int>(h % 3))]; }
+  /// The destination of half-edge h: vertex(t, i + 2) = org(twin(h)).
+  Index dest(Index h) const { return v_[h - h % 3 + prev(static_cast<int>(h % 3))]; }
+  /// A triangle that has vertex v (`infinite` for v∞), or `none` when v is not a vertex
+  /// (invariant 5; O(1)).
+  Index face_of(Index v) const {
+    const Index k = v + 1;  // v∞ = 0xFFFFFFFF wraps to slot 0
+    return k < link_.size() ? link_[k] : none;
+  }
   /// The slot of vertex v in t, or −1.
   int slot(Index t, Index v) const {
     for (int i = 0; i < 3; ++i)
@@ -118,10 +145,35 @@ class Triangulation {
   const std::vector<std::pair<Index, Index>>& duplicates() const { return duplicates_; }
   /// Bytes held by the arrays (capacities, not sizes): the memory figure of the benchmark.
   std::size_t memory_bytes() const {
-    return points_.capacity() * sizeof(Point) + (v_.capacity() + n_.capacity()) * sizeof(Index) +
+    return points_.capacity() * sizeof(Point) + (v_.capacity() + n_.capacity() + link_.capacity()) * sizeof(Index) +
            duplicates_.capacity() * sizeof(duplicates_[0]);
   }
-  /// Checks invariants 1–4 of the file comment exactly; returns an empty string or what is wrong.
+  /// Each undirected edge once, as the half-edge h = 3t + i with h < twin(h) (edges at v∞
+  /// included: 3T/2 of them for T triangles); its endpoints are org(h) and dest(h).
+  std::vector<Index> edges() const;
+
+  class Star;
+  /// The triangles around vertex v (or v∞), counter-clockwise, starting at face_of(v); empty
+  /// when v is not a vertex. Triangle k is (v, n_k, n_k+1) for the neighbours of `neighbors(v)`.
+  Star incident_faces(Index v) const;
+  /// The vertices adjacent to v, counter-clockwise around it (v∞ among them for a hull vertex),
+  /// the k-th being the vertex after v in the k-th triangle of incident_faces(v).
+  Star neighbors(Index v) const;
+
+  /// Locates p with the walk below and the exact `orient`, from triangle `hint` (any index:
+  /// taken modulo size()). For a triangulation of front points with v∞ (dimension 2) and a front
+  /// point p; throws `Undefined` for a point not in front or a triangulation without v∞ (T²
+  /// input without a hull: its lunes need the sides of antipodal_edge.hpp, which only
+  /// Algorithm 9's walk has so far), std::logic_error in dimension < 2.
+  Location locate(const Point& p, Index hint = 0) const;
+  /// The vertex nearest to p (exact `compare_distance`; one of the nearest when several tie),
+  /// for a *Delaunay* triangulation of front points and a front point p: locate p from `hint`,
+  /// then move to a strictly nearer neighbour while there is one (triangulation_query.cpp proves
+  /// that this stops at a nearest vertex). On another triangulation it returns a vertex no
+  /// neighbour of which is nearer. Throws as `locate`.
+  Index nearest_vertex(const Point& p, Index hint = 0) const;
+
+  /// Checks invariants 1–5 of the file comment exactly; returns an empty string or what is wrong.
   std::string validate() const;
   /// True when validate() finds nothing wrong.
   bool valid() const { return validate().empty(); }
@@ -166,6 +218,7 @@ class Triangulation {
     v_ = std::move(vertices);
     n_ = std::move(twins);
     dimension_ = 2;
+    relink();
   }
   /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
   /// `from`); used when a duplicate of smaller index arrives.
@@ -200,6 +253,10 @@ class Triangulation {
     v_[3 * t + 1] = b;
     v_[3 * t + 2] = c;
   }
+  /// Rebuilds the vertex link (invariant 5) by a scan of the triangles.
+  void relink();
+  /// Sets the link of vertex v (or v∞) to triangle t.
+  void set_link(Index v, Index t) { link_[v + 1] = t; }
   Index add_triangle() {
     v_.resize(v_.size() + 3);
     n_.resize(n_.size() + 3);
@@ -210,13 +267,74 @@ class Triangulation {
   void make_fan(Index p, const Index* ring, const Index* ext, const Index* tri, int k);
   /// Gives vertex k the index order[k] in the triangles and the duplicates.
   void renumber_indices(const std::vector<Index>& order);
+  /// Moves the link of vertex k to order[k], for `count` points afterwards (a new array of
+  /// 4 bytes a point while the old one is alive).
+  void renumber_link(const std::vector<Index>& order, std::size_t count);
 
   std::vector<Point> points_;
   std::vector<Index> v_;  // 3 vertex indices per triangle
   std::vector<Index> n_;  // 3 twin half-edges per triangle
+  std::vector<Index> link_;  // link_[v + 1]: a triangle of vertex v; link_[0]: of v∞ (invariant 5)
   std::vector<std::pair<Index, Index>> duplicates_;
   int dimension_ = -1;
 };
+
+//> star
+/// The star of a vertex v: its triangles (`incident_faces`) or its neighbours (`neighbors`),
+/// counter-clockwise. From triangle t = (v, a, b) the next one is across the edge v–b, the
+/// half-edge opposite the slot after v's: one load per step, and one `slot` search.
+class Triangulation::Star {
+ public:
+  /// A forward iterator over the star (a circulator cut open at face_of(v)).
+  class iterator {
+   public:
+    using value_type = Index;                           ///< a triangle or a vertex
+    using difference_type = std::ptrdiff_t;             ///< unused
+    using iterator_category = std::forward_iterator_tag;  ///< one pass or many
+    iterator() = default;
+    /// The iterator at triangle t of v's star.
+    iterator(const Triangulation* tr, Index v, Index t, bool faces)
+        : tr_(tr), v_(v), t_(t), first_(t), s_(t == none ? 0 : tr->slot(t, v)), faces_(faces) {}
+    /// The current triangle, or the vertex after v in it.
+    Index operator*() const { return faces_ ? t_ : tr_->v_[3 * t_ + next(s_)]; }
+    /// The next triangle counter-clockwise around v; the end after a full turn.
+    iterator& operator++() {
+      t_ = tr_->n_[3 * t_ + next(s_)] / 3;
+      if (t_ == first_) t_ = none;
+      else s_ = tr_->slot(t_, v_);
+      return *this;
+    }
+    /// Post-increment.
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    /// Equal at the same triangle (all ends are equal).
+    bool operator==(const iterator& o) const { return t_ == o.t_; }
+
+   private:
+    const Triangulation* tr_ = nullptr;
+    Index v_ = none, t_ = none, first_ = none;
+    int s_ = 0;
+    bool faces_ = true;
+  };
+  /// The star of v in tr: its triangles (`faces`) or its neighbours.
+  Star(const Triangulation& tr, Index v, bool faces) : tr_(&tr), v_(v), faces_(faces) {}
+  /// From face_of(v).
+  iterator begin() const { return {tr_, v_, tr_->face_of(v_), faces_}; }
+  /// After a full turn.
+  iterator end() const { return {}; }
+
+ private:
+  const Triangulation* tr_;
+  Index v_;
+  bool faces_;
+};
+//< star
+
+inline Triangulation::Star Triangulation::incident_faces(Index v) const { return Star(*this, v, true); }
+inline Triangulation::Star Triangulation::neighbors(Index v) const { return Star(*this, v, false); }
 
 template <class Orient>
 Triangulation::Location Triangulation::locate(const Point& p, Index t, Orient&& orient, std::uint32_t& rng) const {
