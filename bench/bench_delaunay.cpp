@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "t2/filter.hpp"
+#include "t2/kernel/filter.hpp"
 #include "t2/gen/generate.hpp"
-#include "t2/incircle.hpp"
+#include "t2/kernel/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "raw_kernel.hpp"
 
@@ -139,7 +139,7 @@ void Raw(benchmark::State& state) {
     benchmark::DoNotOptimize(t2::delaunay(pts).size());
     exact_time += (cpu_now() - t0);
     t0 = cpu_now();
-    benchmark::DoNotOptimize(t2::delaunay_with<t2bench::RawDelaunayKernel>(pts).size());
+    benchmark::DoNotOptimize(t2::delaunay_with<t2bench::RawDelaunayTraits>(pts).size());
     raw_time += (cpu_now() - t0);
   }
   state.counters["exact_s"] = exact_time / double(state.iterations());
@@ -149,9 +149,9 @@ void Raw(benchmark::State& state) {
 BENCHMARK(Raw)->Iterations(2)->Unit(benchmark::kSecond);
 
 // The trace hooks of delaunay_with (the kernel's `inserted` and `flipped`, which t2 animate's
-// recorder fills): DelaunayKernel's empty hooks against a kernel that counts every call, on the
+// recorder fills): DelaunayTraits's empty hooks against a kernel that counts every call, on the
 // same points in one run. Equal times say that the hooks cost nothing when off.
-struct CountingKernel : t2::DelaunayKernel {
+struct CountingTraits : t2::DelaunayTraits {
   long* calls;
   void inserted(const t2::Triangulation&, t2::Triangulation::Index) { ++*calls; }
   void flipped(const t2::Triangulation&, t2::Triangulation::Index, t2::Triangulation::Index) { ++*calls; }
@@ -166,7 +166,7 @@ void Trace(benchmark::State& state) {
     benchmark::DoNotOptimize(t2::delaunay(pts).size());
     off += cpu_now() - t0;
     t0 = cpu_now();
-    benchmark::DoNotOptimize(t2::delaunay_with(pts, CountingKernel{{}, &calls}).size());
+    benchmark::DoNotOptimize(t2::delaunay_with(pts, CountingTraits{{}, &calls}).size());
     counting += cpu_now() - t0;
   }
   const double it = double(state.iterations());

@@ -22,11 +22,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "t2/distance.hpp"
-#include "t2/incircle.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/line.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/line.hpp"
+#include "t2/kernel/orient.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "t2/filter.hpp"
-#include "t2/incircle.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/filter.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/delaunay.hpp"
 
 namespace t2bench {
@@ -32,7 +32,7 @@ inline t2::Sign raw_orient(const t2::Point& p, const t2::Point& q, const t2::Poi
 }
 
 /// The Delaunay code on plain double predicates: not exact (uniform input only).
-struct RawDelaunayKernel : t2::DelaunayKernel {
+struct RawDelaunayTraits : t2::DelaunayTraits {
   /// orient in doubles
   static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return raw_orient(p, q, r); }
   /// in_circle in doubles

@@ -46,12 +46,12 @@ extern "C" {
 #include <string>
 #include <vector>
 
-#include "t2/filter.hpp"
+#include "t2/kernel/filter.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 #include "t2/hull3d.hpp"
 #include "t2/hull/layers.hpp"
-#include "t2/incircle.hpp"
+#include "t2/kernel/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/divide.hpp"
 #include "raw_kernel.hpp"
@@ -131,16 +131,16 @@ t2::Sign exact_orient(const t2::Point& p, const t2::Point& q, const t2::Point& r
       t2::det3(D(p.w()), D(p.x()), D(p.y()), D(q.w()), D(q.x()), D(q.y()), D(r.w()), D(r.x()), D(r.y())));
 }
 
-struct RawHullKernel : t2::ExactKernel {
+struct RawHullTraits : t2::HullTraits {
   static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return t2bench::raw_orient(p, q, r); }
 };
-struct ExactOnlyHullKernel : t2::ExactKernel {
+struct ExactOnlyHullTraits : t2::HullTraits {
   static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return exact_orient(p, q, r); }
 };
 
 // The same determinants evaluated exactly (dyadic GMP numbers) on every call: exactness without
 // the floating-point filter that makes it cheap.
-struct ExactOnlyKernel : t2::DelaunayKernel {
+struct ExactOnlyTraits : t2::DelaunayTraits {
   using D = t2::Dyadic;
   static t2::Sign orient(const t2::Point& p, const t2::Point& q, const t2::Point& r) { return exact_orient(p, q, r); }
   static t2::Sign in_circle(const t2::Point& a, const t2::Point& b, const t2::Point& c, const t2::Point& d) {
@@ -171,8 +171,8 @@ Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
       {"quickhull", t2::HullAlgorithm::quickhull}, {"merge", t2::HullAlgorithm::merge}};
   if (auto it = own.find(impl); it != own.end())
     return [&P, a = it->second] { return t2::convex_hull(P, a).size(); };
-  if (impl == "raw") return [&P] { return t2::convex_hull<RawHullKernel>(P).size(); };
-  if (impl == "exact") return [&P] { return t2::convex_hull<ExactOnlyHullKernel>(P).size(); };
+  if (impl == "raw") return [&P] { return t2::convex_hull<RawHullTraits>(P).size(); };
+  if (impl == "exact") return [&P] { return t2::convex_hull<ExactOnlyHullTraits>(P).size(); };
   if (impl == "cgal") {
     auto C = std::make_shared<std::vector<Epick::Point_2>>(t2bench::to_cgal(P));
     return [C] {
@@ -209,8 +209,8 @@ Run delaunay_run(const std::string& impl, std::vector<t2::Point>& P) {
   if (impl == "t2") return [&P] { return finite_count(t2::delaunay(P)); };
   if (impl == "owned") return [&P] { return finite_count(t2::delaunay(std::move(P))); };
   if (impl == "divide") return [&P] { return finite_count(t2::delaunay_divide(P)); };
-  if (impl == "raw") return [&P] { return finite_count(t2::delaunay_with<t2bench::RawDelaunayKernel>(P)); };
-  if (impl == "exact") return [&P] { return finite_count(t2::delaunay_with<ExactOnlyKernel>(P)); };
+  if (impl == "raw") return [&P] { return finite_count(t2::delaunay_with<t2bench::RawDelaunayTraits>(P)); };
+  if (impl == "exact") return [&P] { return finite_count(t2::delaunay_with<ExactOnlyTraits>(P)); };
   if (impl == "cgal") {
     auto C = std::make_shared<std::vector<Epick::Point_2>>(t2bench::to_cgal(P));
     return [C] {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

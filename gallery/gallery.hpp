@@ -2,7 +2,7 @@
 // The figure gallery's shared parts: output place, style shorthands, views, scene
 // loading, and the entry list each part of the gallery contributes (one file per part:
 // thesis3.cpp, thesis4_primitives.cpp, thesis4_predicates.cpp).
-#include <t2/scene.hpp>
+#include <t2/kernel/scene.hpp>
 #include <t2/t2.hpp>
 
 #include <cmath>

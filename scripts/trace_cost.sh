@@ -1,6 +1,6 @@
 #!/bin/sh
 # The trace costs nothing when off: the machine code of graham, jarvis and delaunay_with with
-# their default trace (NoTrace, DelaunayKernel's empty hooks) is compared with that of copies
+# their default trace (NoTrace, DelaunayTraits's empty hooks) is compared with that of copies
 # of the same functions from which every trace call was deleted (made here by sed from the
 # library's headers). Both are compiled in one file with the project's flags (-O2) and
 # disassembled; the script prints the code size of each pair and whether the instructions are
@@ -19,10 +19,10 @@ trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 
 # Untraced copies: the trace parameter and every line that calls it removed, the function renamed.
 for f in graham jarvis; do
-  perl -0pe 's/,\s*Tr&& trace = \{\}\)/)/; s/template <class K = ExactKernel, class Tr = NoTrace>\n(std::vector<std::size_t>) '"$f"'\(/template <class K = ExactKernel>\n$1 '"$f"'_untraced(/; s/^.*trace\(HullStep.*\n//mg; s/#pragma once//' \
+  perl -0pe 's/,\s*Tr&& trace = \{\}\)/)/; s/template <class K = HullTraits, class Tr = NoTrace>\n(std::vector<std::size_t>) '"$f"'\(/template <class K = HullTraits>\n$1 '"$f"'_untraced(/; s/^.*trace\(HullStep.*\n//mg; s/#pragma once//' \
     "$inc/t2/hull/$f.hpp" >"$tmp/${f}_untraced.hpp"
 done
-awk '/^template <class K = DelaunayKernel>/{on=1} /^\/\/\/ The Delaunay triangulation of front points with the exact/{on=0} on' \
+awk '/^template <class K = DelaunayTraits>/{on=1} /^\/\/\/ The Delaunay triangulation of front points with the exact/{on=0} on' \
   "$inc/t2/triangulation/delaunay.hpp" |
   sed -e '/kernel\.inserted(/d' -e '/kernel\.flipped(/d' -e 's/Triangulation delaunay_with(/Triangulation delaunay_with_untraced(/' \
   >"$tmp/delaunay_body.hpp"
@@ -37,12 +37,12 @@ cat >"$tmp/cost.cpp" <<'CPP'
 #include "delaunay_untraced.hpp"
 namespace t2 {
 using V = std::vector<std::size_t>;
-template V graham<ExactKernel, NoTrace>(std::span<const Point>, const V&, const Chart&, NoTrace&&);
-template V graham_untraced<ExactKernel>(std::span<const Point>, const V&, const Chart&);
-template V jarvis<ExactKernel, NoTrace>(std::span<const Point>, const V&, const Chart&, NoTrace&&);
-template V jarvis_untraced<ExactKernel>(std::span<const Point>, const V&, const Chart&);
-template Triangulation delaunay_with<DelaunayKernel>(std::span<const Point>, DelaunayKernel);
-template Triangulation delaunay_with_untraced<DelaunayKernel>(std::span<const Point>, DelaunayKernel);
+template V graham<HullTraits, NoTrace>(std::span<const Point>, const V&, const Chart&, NoTrace&&);
+template V graham_untraced<HullTraits>(std::span<const Point>, const V&, const Chart&);
+template V jarvis<HullTraits, NoTrace>(std::span<const Point>, const V&, const Chart&, NoTrace&&);
+template V jarvis_untraced<HullTraits>(std::span<const Point>, const V&, const Chart&);
+template Triangulation delaunay_with<DelaunayTraits>(std::span<const Point>, DelaunayTraits);
+template Triangulation delaunay_with_untraced<DelaunayTraits>(std::span<const Point>, DelaunayTraits);
 }
 CPP
 "$CXX" -std=c++20 -O2 -g -DNDEBUG -I"$inc" -I"$tmp" -c "$tmp/cost.cpp" -o "$tmp/cost.o"

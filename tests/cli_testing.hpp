@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "process.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2::testing {
 

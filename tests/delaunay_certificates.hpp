@@ -11,7 +11,7 @@
 #include <set>
 #include <vector>
 
-#include "t2/orient.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "testing.hpp"
 
@@ -58,7 +58,7 @@ inline void expect_delaunay(const Triangulation& tr, bool exact_areas = true) {
       if (tr.is_infinite(e / 3)) continue;
       const Point& d = pts[tr.vertex(e / 3, static_cast<int>(e % 3))];
       ASSERT_NE(in_circle(a, b, c, d), POSITIVE) << "edge " << i << " of triangle " << t << " is not Delaunay";
-      ASSERT_EQ(perturbed_in_circle(DelaunayKernel{}, a, b, c, d), NEGATIVE)
+      ASSERT_EQ(perturbed_in_circle(DelaunayTraits{}, a, b, c, d), NEGATIVE)
           << "edge " << i << " of triangle " << t << " is not Delaunay under the perturbation";
     }
   }

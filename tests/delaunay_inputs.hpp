@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "t2/gen/generate.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 
 namespace t2::testing {
 

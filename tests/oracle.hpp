@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "t2/number.hpp"
-#include "t2/point.hpp"
-#include "t2/t1.hpp"
+#include "t2/kernel/number.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/t1.hpp"
 
 namespace t2::testing {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2 {
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <variant>
 
-#include "t2/affine.hpp"
+#include "t2/kernel/affine.hpp"
 #include "test_prim.hpp"
 
 namespace t2 {

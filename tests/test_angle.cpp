@@ -15,7 +15,7 @@
 #include <random>
 #include <vector>
 
-#include "t2/angle.hpp"
+#include "t2/kernel/angle.hpp"
 #include "testing.hpp"
 
 namespace t2 {

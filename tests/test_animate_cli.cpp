@@ -8,7 +8,7 @@
 #include "cli_testing.hpp"
 #include "testing.hpp"
 #include "t2/gen/generate.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 #include "t2/triangulation/delaunay.hpp"
 
 namespace t2::testing {

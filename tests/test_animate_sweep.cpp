@@ -17,8 +17,8 @@
 #include "animate_testing.hpp"
 #include "cli_testing.hpp"
 #include "t2/gen/generate.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/trace/sweep_recorder.hpp"
 #include "t2/triangulation/triangulate.hpp"
 

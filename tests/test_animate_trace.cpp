@@ -256,7 +256,7 @@ TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
   for (const auto& P : front_inputs()) {
     Recording rec;
     const Triangulation t = delaunay_with(std::span<const Point>(P), trace::DelaunayRecorder(P, rec));
-    const auto expected = sorted_triangles(delaunay(P));  // the default kernel: the same answer
+    const auto expected = sorted_triangles(delaunay(P));  // the default traits: the same answer
     EXPECT_EQ(sorted_triangles(t), expected);
     if (t.dimension() < 2) continue;
     ASSERT_FALSE(rec.empty());

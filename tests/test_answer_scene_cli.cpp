@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "cli_testing.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2::testing {
 namespace {

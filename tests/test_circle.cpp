@@ -2,7 +2,7 @@
 // for double and Integer coordinates, against rational Cartesian oracles.
 #include <gtest/gtest.h>
 
-#include "t2/circle.hpp"
+#include "t2/kernel/circle.hpp"
 #include "test_prim.hpp"
 
 namespace t2 {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "t2/draw.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 #include "cli_testing.hpp"
 #include "testing.hpp"
 

@@ -175,17 +175,17 @@ TEST(Delaunay, PointsNotInFront) {
 }
 
 // The trace hooks of a kernel see every insertion and every flip.
-struct CountingKernel : DelaunayKernel {
+struct CountingTraits : DelaunayTraits {
   std::size_t inserted_count = 0, flips = 0;
   void inserted(const Triangulation&, Triangulation::Index) { ++inserted_count; }
   void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++flips; }
 };
 
 TEST(Delaunay, KernelTraceHooks) {
-  CountingKernel k;
+  CountingTraits k;
   const auto pts = testing::gen_points(gen::Kind::uniform, 1000, 11);
   struct Ref {
-    CountingKernel* k;
+    CountingTraits* k;
     static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
     static Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
       return t2::in_circle(a, b, c, d);

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "t2/distance.hpp"
+#include "t2/kernel/distance.hpp"
 #include "testing.hpp"
 
 namespace t2 {

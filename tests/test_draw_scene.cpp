@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "t2/draw.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2 {
 namespace {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <random>
 
-#include "t2/line.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/line.hpp"
+#include "t2/kernel/orient.hpp"
 #include "testing.hpp"
 
 namespace t2 {

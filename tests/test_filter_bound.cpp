@@ -10,8 +10,8 @@
 #include <optional>
 #include <random>
 
-#include "t2/distance.hpp"
-#include "t2/line.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/line.hpp"
 #include "testing.hpp"
 
 namespace t2 {

@@ -89,13 +89,13 @@ TEST(HullCgal, BucketSortOfPlainPoints) {
     }
     for (int i = 0; i < 300; ++i) P.push_back(P[rng() % P.size()]);  // repeats
     const Chart chart = front_chart();
-    const ChartOrder<ExactKernel> order{chart};
+    const ChartOrder<HullTraits> order{chart};
     std::vector<std::size_t> idx(P.size());
     std::iota(idx.begin(), idx.end(), std::size_t{0});
     std::vector<Point> want = P;
     std::sort(want.begin(), want.end(), [&](const Point& a, const Point& b) { return order.less(a, b); });
     want.erase(std::unique(want.begin(), want.end()), want.end());
-    const auto got = detail::sorted_in_chart<ExactKernel>(P, idx, order);
+    const auto got = detail::sorted_in_chart<HullTraits>(P, idx, order);
     ASSERT_EQ(got.size(), want.size()) << "range " << range;
     for (std::size_t k = 0; k < got.size(); ++k) {
       ASSERT_TRUE(got[k].p == want[k]) << "range " << range << " at " << k;
@@ -117,7 +117,7 @@ TEST(HullCgal, TinyInputs) {
 
 // A kernel that counts its orientation tests, and a trace that records the steps: the
 // algorithms are templates on both, and give the same answer through them.
-struct CountingKernel {
+struct CountingTraits {
   static inline long calls = 0;
   static Sign orient(const Point& p, const Point& q, const Point& r) {
     ++calls;
@@ -141,11 +141,11 @@ TEST(HullCgal, KernelAndTraceParameters) {
   const auto P = gen::points(Kind::both_sides, o);
   const auto ref = convex_hull(P, HullAlgorithm::merge);
   for (HullAlgorithm a : all_algorithms()) {
-    CountingKernel::calls = 0;
+    CountingTraits::calls = 0;
     Recorder rec;
-    const auto h = convex_hull<CountingKernel>(P, a, rec);
+    const auto h = convex_hull<CountingTraits>(P, a, rec);
     EXPECT_TRUE(same_cycle(at(P, h), at(P, ref))) << name(a);
-    EXPECT_GT(CountingKernel::calls, 500) << name(a);
+    EXPECT_GT(CountingTraits::calls, 500) << name(a);
     EXPECT_FALSE(rec.steps.empty()) << name(a);
   }
   Recorder rec;  // Graham's last step leaves the hull on its stack

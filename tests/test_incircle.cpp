@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "t2/distance.hpp"
-#include "t2/incircle.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/incircle.hpp"
 #include "testing.hpp"
 
 namespace t2 {

@@ -5,8 +5,8 @@
 #include <variant>
 #include <vector>
 
-#include "t2/bbox.hpp"
-#include "t2/isorect.hpp"
+#include "t2/kernel/bbox.hpp"
+#include "t2/kernel/isorect.hpp"
 #include "test_prim.hpp"
 
 namespace t2 {

@@ -13,7 +13,7 @@
 #include <tuple>
 #include <vector>
 
-#include "t2/lexicographic.hpp"
+#include "t2/kernel/lexicographic.hpp"
 #include "testing.hpp"
 
 namespace t2 {

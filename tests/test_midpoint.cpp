@@ -7,8 +7,8 @@
 #include <array>
 #include <random>
 
-#include "t2/distance.hpp"
-#include "t2/midpoint.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/midpoint.hpp"
 #include "testing.hpp"
 
 namespace t2 {

@@ -7,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
 #include "testing.hpp"
 
 namespace t2 {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "t2/orient3d.hpp"
+#include "t2/kernel/orient3d.hpp"
 #include "testing.hpp"
 
 namespace t2 {

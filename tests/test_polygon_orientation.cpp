@@ -11,7 +11,7 @@
 #include <random>
 
 #include "t2/gen/generate.hpp"
-#include "t2/polygon.hpp"
+#include "t2/kernel/polygon.hpp"
 
 namespace t2 {
 namespace {

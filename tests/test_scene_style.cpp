@@ -1,4 +1,4 @@
-// Style attributes of scene files (t2/scene_style.hpp): every attribute read from the text the
+// Style attributes of scene files (t2/kernel/scene_style.hpp): every attribute read from the text the
 // README shows, `style` lines and their reset, which kinds an attribute applies to, every bad
 // value refused with file:line, the text of a scene (`to_string`) read back to the same scene,
 // and the styles turned into the `Style` of the drawing (t2/draw/scene_figure.hpp).
@@ -10,7 +10,7 @@
 
 #include "scene_testing.hpp"
 #include "t2/draw.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 #include "testing.hpp"
 
 namespace t2 {

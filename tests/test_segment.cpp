@@ -6,10 +6,10 @@
 #include <random>
 #include <variant>
 
-#include "t2/polygon.hpp"
-#include "t2/ray.hpp"
-#include "t2/segment.hpp"
-#include "t2/vector.hpp"
+#include "t2/kernel/polygon.hpp"
+#include "t2/kernel/ray.hpp"
+#include "t2/kernel/segment.hpp"
+#include "t2/kernel/vector.hpp"
 #include "test_prim.hpp"
 
 namespace t2 {

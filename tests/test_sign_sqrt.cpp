@@ -12,7 +12,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "t2/sign_sqrt.hpp"
+#include "t2/kernel/sign_sqrt.hpp"
 #include "testing.hpp"
 
 namespace t2 {

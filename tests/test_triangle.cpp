@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "t2/triangle.hpp"
+#include "t2/kernel/triangle.hpp"
 #include "test_prim.hpp"
 
 namespace t2 {

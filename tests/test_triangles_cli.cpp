@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "cli_testing.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 #include "t2/triangulation/lawson.hpp"
 
 namespace t2::testing {

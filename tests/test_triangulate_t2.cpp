@@ -19,7 +19,7 @@
 
 #include "t2/gen/generate.hpp"
 #include "t2/hull/convex_hull.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/triangulate.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "cli_testing.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 #include "t2/triangulation/triangulate.hpp"
 
 namespace t2::testing {

@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "t2/orient.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 #include "testing.hpp"

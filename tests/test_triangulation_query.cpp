@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "t2/distance.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/divide.hpp"
 #include "t2/triangulation/lawson.hpp"

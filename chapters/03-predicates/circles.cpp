@@ -2,8 +2,8 @@
 // infinity, and the in-circle test. Called from main.cpp; prints what the chapter quotes and
 // draws the figures distance-order-* and incircle-*.
 #include <t2/t2.hpp>
-#include <t2/distance.hpp>
-#include <t2/incircle.hpp>
+#include <t2/kernel/distance.hpp>
+#include <t2/kernel/incircle.hpp>
 
 #include <cmath>
 #include <filesystem>

@@ -2,7 +2,7 @@
 // those of section 8 (circles.cpp). Called from main.cpp, which passes the naive midpoint its
 // listing shows.
 #include <t2/t2.hpp>
-#include <t2/midpoint.hpp>
+#include <t2/kernel/midpoint.hpp>
 
 #include <filesystem>
 #include <iostream>

@@ -6,11 +6,11 @@
 // program implements it literally (so that its failures can be printed) next to the
 // corrected version, and checks both against an independent oracle.
 #include <t2/t2.hpp>
-#include <t2/angle.hpp>
-#include <t2/distance.hpp>
-#include <t2/lexicographic.hpp>
-#include <t2/midpoint.hpp>
-#include <t2/segment.hpp>
+#include <t2/kernel/angle.hpp>
+#include <t2/kernel/distance.hpp>
+#include <t2/kernel/lexicographic.hpp>
+#include <t2/kernel/midpoint.hpp>
+#include <t2/kernel/segment.hpp>
 
 #include <array>
 #include <cmath>

@@ -113,7 +113,7 @@ void no_hull() {
     }
   }
   //< no-hull
-  for (const auto& S : sets) require(!t2::has_hull<t2::ExactKernel>(S), "no hull");
+  for (const auto& S : sets) require(!t2::has_hull<t2::HullTraits>(S), "no hull");
   std::cout << "\n";
 }
 

@@ -176,7 +176,7 @@ void lawson() {
 }
 
 // Counts the flips of the incremental algorithm through its trace hooks.
-struct Counting : t2::DelaunayKernel {
+struct Counting : t2::DelaunayTraits {
   std::size_t* flips;
   void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++*flips; }
 };

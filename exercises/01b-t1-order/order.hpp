@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 01b: the API you implement in order.cpp. Do not change this file.
-#include <t2/sign.hpp>
+#include <t2/kernel/sign.hpp>
 
 namespace ex01b {
 

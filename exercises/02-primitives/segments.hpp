@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 02: the API you implement in segments.cpp. Do not change this file.
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex02 {
 

@@ -1,7 +1,7 @@
 // Exercise 02, public tests: run them with `t2 check 02`.
 #include <gtest/gtest.h>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "segments.hpp"
 

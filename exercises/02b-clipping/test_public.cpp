@@ -1,7 +1,7 @@
 // Exercise 02b, public tests: run them with `t2 check 02b`.
 #include <gtest/gtest.h>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "clip.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 03b: the API you implement in angles.cpp. Do not change this file.
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex03b {
 

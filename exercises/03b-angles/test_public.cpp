@@ -1,7 +1,7 @@
 // Exercise 03b, public tests: run them with `t2 check 03b`.
 #include <gtest/gtest.h>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "angles.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Exercise 04: the API you implement in exact_orient.cpp. Do not change this file.
-#include <t2/point.hpp>
-#include <t2/sign.hpp>
+#include <t2/kernel/point.hpp>
+#include <t2/kernel/sign.hpp>
 
 namespace ex04 {
 

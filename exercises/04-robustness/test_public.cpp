@@ -1,7 +1,7 @@
 // Exercise 04, public tests: run them with `t2 check 04`.
 #include <gtest/gtest.h>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "exact_orient.hpp"
 

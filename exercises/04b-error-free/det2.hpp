@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 04b: the API you implement in det2.cpp. Do not change this file.
-#include <t2/sign.hpp>
+#include <t2/kernel/sign.hpp>
 
 namespace ex04b {
 

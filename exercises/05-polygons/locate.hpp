@@ -2,8 +2,8 @@
 // Exercise 05: the API you implement in locate.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
-#include <t2/sign.hpp>
+#include <t2/kernel/point.hpp>
+#include <t2/kernel/sign.hpp>
 
 namespace ex05 {
 

@@ -1,7 +1,7 @@
 // Exercise 05, public tests: run them with `t2 check 05`.
 #include <gtest/gtest.h>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "locate.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 05b: the API you implement in crossing.cpp. Do not change this file.
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex05b {
 

@@ -1,8 +1,8 @@
 // Exercise 05b, public tests: run them with `t2 check 05b`.
 #include <gtest/gtest.h>
 
-#include <t2/error.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "crossing.hpp"
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "hemisphere.hpp"
 

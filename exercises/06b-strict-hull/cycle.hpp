@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex06btest {
 

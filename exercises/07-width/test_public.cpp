@@ -1,8 +1,8 @@
 // Exercise 07, public tests: run them with `t2 check 07`.
 #include <gtest/gtest.h>
 
-#include <t2/error.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "strip.hpp"
 #include "width.hpp"

@@ -2,7 +2,7 @@
 // Exercise 07: the API you implement in width.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex07 {
 

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex07btest {
 

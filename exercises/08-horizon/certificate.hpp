@@ -13,7 +13,7 @@
 #include <vector>
 
 #include <t2/hull3d/degenerate.hpp>
-#include <t2/orient3d.hpp>
+#include <t2/kernel/orient3d.hpp>
 
 namespace ex08test {
 

@@ -2,7 +2,7 @@
 // Exercise 08: the API you implement in horizon.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/orient3d.hpp>
+#include <t2/kernel/orient3d.hpp>
 
 namespace ex08 {
 

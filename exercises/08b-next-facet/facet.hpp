@@ -2,7 +2,7 @@
 // Exercise 08b: the API you implement in facet.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/orient3d.hpp>
+#include <t2/kernel/orient3d.hpp>
 
 namespace ex08b {
 

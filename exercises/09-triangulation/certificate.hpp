@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include <t2/lexicographic.hpp>
-#include <t2/number.hpp>
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/lexicographic.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex09test {
 

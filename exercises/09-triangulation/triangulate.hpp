@@ -2,7 +2,7 @@
 // Exercise 09: the API you implement in triangulate.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex09 {
 

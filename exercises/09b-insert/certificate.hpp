@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include <t2/number.hpp>
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "insert.hpp"
 

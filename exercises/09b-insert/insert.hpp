@@ -2,7 +2,7 @@
 // Exercise 09b: the API you implement in insert.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex09b {
 

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include <t2/incircle.hpp>
-#include <t2/number.hpp>
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/incircle.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex10test {
 

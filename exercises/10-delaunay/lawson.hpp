@@ -2,7 +2,7 @@
 // Exercise 10: the API you implement in lawson.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex10 {
 

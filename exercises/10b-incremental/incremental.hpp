@@ -2,7 +2,7 @@
 // Exercise 10b: the API you implement in incremental.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex10b {
 

@@ -1,8 +1,8 @@
 // Exercise 10b, public tests: run them with `t2 check 10b`.
 #include <gtest/gtest.h>
 
-#include <t2/error.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "certificate.hpp"
 #include "incremental.hpp"

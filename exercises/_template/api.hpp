@@ -1,6 +1,6 @@
 #pragma once
 // Exercise NN: the API the student implements in api.cpp.
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace exNN {
 

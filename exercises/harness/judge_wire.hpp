@@ -23,10 +23,10 @@
 #include <utility>
 #include <vector>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
-#include <t2/orient3d.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/orient3d.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace t2judge {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "t2/hull3d/facets.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::testing::cgal {

@@ -5,7 +5,7 @@
 // check_compile_fail.cmake twice: as is (must fail, with the library's message) and with
 // -DT2_CONTROL (the same body, the flag a constant and the lambda without captures, must
 // compile), so the failure is known to come from the capture.
-#include "t2/filter.hpp"
+#include "t2/kernel/filter.hpp"
 
 int main(int argc, char**) {
 #ifdef T2_CONTROL

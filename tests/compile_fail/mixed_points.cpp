@@ -2,7 +2,7 @@
 // ExactPoint (GMP integers) in one polynomial would need a conversion that the caller must make
 // explicit (to_exact). Built by check_compile_fail.cmake twice: as is (must fail, with the
 // library's message) and with -DT2_CONTROL (both ExactPoints, must compile).
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 
 int main() {
   auto minor = [](const auto& p, const auto& q) { return p.w * q.x - p.x * q.w; };

@@ -1,8 +1,8 @@
 // Linked to t2::kernel only (no Cairo, no drawing): the kernel's headers and sources stand alone.
 // Run by CTest as kernel.links_without_cairo; it checks a few exact answers on the way.
-#include <t2/constructions.hpp>
-#include <t2/predicates.hpp>
-#include <t2/scene.hpp>
+#include <t2/kernel/constructions.hpp>
+#include <t2/kernel/predicates.hpp>
+#include <t2/kernel/scene.hpp>
 
 #include <cstdio>
 

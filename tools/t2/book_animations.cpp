@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "animate/run.hpp"
-#include "t2/io.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli::book {
 

@@ -8,7 +8,7 @@
 #include "book_ast.hpp"
 #include "book_core.hpp"
 #include "process.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli::book {
 

@@ -14,7 +14,7 @@
 #include "book_animations.hpp"
 #include "book_ast.hpp"
 #include "book_core.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli::book {
 

@@ -24,7 +24,7 @@
 #include "bench_run.hpp"
 #include "bench_stats.hpp"
 #include "command.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

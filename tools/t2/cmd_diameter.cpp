@@ -10,11 +10,11 @@
 #include "command.hpp"
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
-#include "t2/distance.hpp"
+#include "t2/kernel/distance.hpp"
 #include "t2/hull/calipers.hpp"
 #include "t2/hull/diameter.hpp"
-#include "t2/io.hpp"
-#include "t2/line.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/line.hpp"
 
 namespace t2cli {
 namespace {

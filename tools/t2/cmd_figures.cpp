@@ -19,8 +19,8 @@
 
 #include "command.hpp"
 #include "process.hpp"
-#include "t2/error.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "command.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/gen/generate.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

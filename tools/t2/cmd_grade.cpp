@@ -7,7 +7,7 @@
 
 #include "command.hpp"
 #include "grader_core.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

@@ -13,8 +13,8 @@
 #include "scene_argument.hpp"
 #include "t2/draw.hpp"
 #include "t2/hull.hpp"
-#include "t2/io.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli {
 namespace {

@@ -14,8 +14,8 @@
 #include "command.hpp"
 #include "t2/draw/polyhedron.hpp"
 #include "t2/hull3d.hpp"
-#include "t2/io.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli {
 namespace {

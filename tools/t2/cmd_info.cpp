@@ -10,9 +10,9 @@
 
 #include "command.hpp"
 #include "scene_argument.hpp"
-#include "t2/io.hpp"
-#include "t2/orient.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli {
 namespace {

@@ -11,7 +11,7 @@
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
 #include "t2/hull/polygon_kernel.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

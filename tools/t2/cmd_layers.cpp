@@ -10,7 +10,7 @@
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
 #include "t2/hull/layers.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 namespace {

@@ -15,7 +15,7 @@
 #include "grader_release.hpp"
 #include "process.hpp"
 #include <nlohmann/json.hpp>
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 #ifndef T2_SOURCE_DIR
 #define T2_SOURCE_DIR "."

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "grader_core.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 #ifndef T2_SOURCE_DIR
 #define T2_SOURCE_DIR "."

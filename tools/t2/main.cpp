@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 namespace t2cli {
 

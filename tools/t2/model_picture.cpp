@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "t2/draw/scene_figure.hpp"
-#include "t2/error.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2cli {
 

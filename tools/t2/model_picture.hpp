@@ -12,8 +12,8 @@
 #include "t2/draw/figure.hpp"
 #include "t2/draw/render.hpp"
 #include "t2/draw/view.hpp"
-#include "t2/point.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace CLI {
 class App;

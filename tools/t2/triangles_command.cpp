@@ -10,9 +10,9 @@
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
 #include "t2/draw.hpp"
-#include "t2/error.hpp"
-#include "t2/io.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/io.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli {
 namespace {

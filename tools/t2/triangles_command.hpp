@@ -9,7 +9,7 @@
 
 #include "command.hpp"
 #include "model_picture.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2cli {

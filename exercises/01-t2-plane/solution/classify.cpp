@@ -3,7 +3,7 @@
 // Each sign is computed exactly with t2::sign_of_poly, so nothing is rounded.
 #include "classify.hpp"
 
-#include <t2/filter.hpp>
+#include <t2/kernel/filter.hpp>
 
 namespace ex01 {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 #include "order.hpp"
 

@@ -6,7 +6,7 @@
 // with t2::sign_of_poly (a filter, then big integers when the doubles cannot tell).
 #include "order.hpp"
 
-#include <t2/filter.hpp>
+#include <t2/kernel/filter.hpp>
 
 namespace ex01b {
 

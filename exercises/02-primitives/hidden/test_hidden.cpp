@@ -5,9 +5,9 @@
 #include <random>
 #include <utility>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "segments.hpp"
 

@@ -5,8 +5,8 @@
 // p × q = 0 and the segment is the one point p.
 #include "segments.hpp"
 
-#include <t2/filter.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/filter.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex02 {
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "clip.hpp"
 

@@ -5,7 +5,7 @@
 // on the wrong side's segment is the single point where it touches.
 #include "clip.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex02b {
 

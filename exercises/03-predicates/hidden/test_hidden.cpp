@@ -3,9 +3,9 @@
 
 #include <random>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "mid.hpp"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "angles.hpp"
 

@@ -6,7 +6,7 @@
 // Everything in big integers: exact.
 #include "angles.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex03b {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include <t2/number.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "exact_orient.hpp"
 

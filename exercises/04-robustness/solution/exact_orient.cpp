@@ -4,7 +4,7 @@
 // sign we want, computed without any rounding.
 #include "exact_orient.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex04 {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 #include "det2.hpp"
 

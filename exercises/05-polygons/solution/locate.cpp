@@ -13,9 +13,9 @@
 
 #include <stdexcept>
 
-#include <t2/error.hpp>
-#include <t2/filter.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/filter.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex05 {
 

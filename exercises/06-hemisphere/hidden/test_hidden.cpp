@@ -13,8 +13,8 @@
 #include <cmath>
 #include <random>
 
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "certificate.hpp"
 #include "hemisphere.hpp"

@@ -12,9 +12,9 @@
 #include <cmath>
 #include <random>
 
-#include <t2/error.hpp>
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "cycle.hpp"
 #include "hull.hpp"

@@ -11,8 +11,8 @@
 #include <cmath>
 #include <random>
 
-#include <t2/error.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "strip.hpp"
 #include "width.hpp"

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <random>
 
-#include <t2/error.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "diameter.hpp"
 #include "farthest.hpp"

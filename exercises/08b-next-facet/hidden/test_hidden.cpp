@@ -12,8 +12,8 @@
 #include <random>
 #include <set>
 
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "facet.hpp"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "certificate.hpp"
 #include "triangulate.hpp"

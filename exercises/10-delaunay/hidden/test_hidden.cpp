@@ -11,9 +11,9 @@
 #include <numeric>
 #include <random>
 
-#include <t2/lexicographic.hpp>
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/lexicographic.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 #include "certificate.hpp"
 #include "lawson.hpp"

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include <t2/incircle.hpp>
+#include <t2/kernel/incircle.hpp>
 
 namespace ex10 {
 

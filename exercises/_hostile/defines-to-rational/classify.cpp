@@ -1,7 +1,7 @@
 // Hostile (issue 10): defines t2::to_rational (and the rest of number.o), so that an oracle linked
 // with this code agrees with wrong answers.
 #include <string>
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 #include <stdexcept>
 #include "classify.hpp"
 namespace ex01 {

@@ -1,7 +1,7 @@
 // Hostile (issue 10): ends with an exit status in 129..192 that depends on hidden data (here on
 // the point it was given), hoping the report shows it (a status that looks like a signal).
 #include <unistd.h>
-#include <t2/point.hpp>
+#include <t2/kernel/point.hpp>
 #include <stdexcept>
 #include "classify.hpp"
 namespace ex01 {

@@ -9,7 +9,7 @@
 #include "painter.hpp"
 #include "sphere_math.hpp"
 #include "t2/draw/palette.hpp"
-#include "t2/segment.hpp"
+#include "t2/kernel/segment.hpp"
 
 namespace t2::draw {
 

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2::draw {
 

@@ -13,8 +13,8 @@
 #include <string_view>
 
 #include "t2/draw/render.hpp"
-#include "t2/error.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/io.hpp"
 
 namespace t2::draw {
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "t2/draw/vec.hpp"
-#include "t2/line.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/line.hpp"
+#include "t2/kernel/point.hpp"
 
 namespace t2::draw {
 

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "t2/draw/view.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 namespace t2::draw {
 

@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/gen/random.hpp"
-#include "t2/number.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/number.hpp"
+#include "t2/kernel/orient.hpp"
 
 namespace t2::gen {
 

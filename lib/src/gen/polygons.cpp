@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <numeric>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/gen/random.hpp"
-#include "t2/orient.hpp"
-#include "t2/polygon.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/polygon.hpp"
 
 namespace t2::gen {
 

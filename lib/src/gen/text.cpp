@@ -2,7 +2,7 @@
 #include <fmt/format.h>
 
 #include "t2/gen/generate.hpp"
-#include "t2/number.hpp"
+#include "t2/kernel/number.hpp"
 
 namespace t2::gen {
 

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <string>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 namespace t2 {
 

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull3d/convex_hull_3d.hpp"
-#include "t2/orient_double.hpp"
+#include "t2/kernel/detail/orient_double.hpp"
 
 namespace t2 {
 

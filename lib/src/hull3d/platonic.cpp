@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull3d/convex_hull_3d.hpp"
 #include "t2/hull3d/winged_edge.hpp"
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <map>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 namespace t2 {
 

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull/convex_hull.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulate.hpp"
 

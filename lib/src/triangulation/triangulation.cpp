@@ -7,8 +7,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "t2/distance.hpp"
-#include "t2/error.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {

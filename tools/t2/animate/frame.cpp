@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "t2/circle.hpp"
+#include "t2/kernel/circle.hpp"
 #include "t2/draw.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 
 namespace t2cli::animate {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/trace/step.hpp"
 
 namespace t2cli::animate {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "animate/page.hpp"
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull.hpp"
-#include "t2/io.hpp"
+#include "t2/kernel/io.hpp"
 #include "t2/trace/delaunay_recorder.hpp"
 #include "t2/trace/hull_recorder.hpp"
 #include "t2/trace/recording.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2cli::animate {
 

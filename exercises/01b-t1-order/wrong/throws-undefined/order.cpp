@@ -3,7 +3,7 @@
 // an input where it must not be thrown.
 #include "order.hpp"
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace ex01b {
 

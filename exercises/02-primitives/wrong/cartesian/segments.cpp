@@ -5,7 +5,7 @@
 
 #include "segments.hpp"
 
-#include <t2/orient.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex02 {
 

@@ -4,7 +4,7 @@
 // line are said to be on the segment.
 #include "segments.hpp"
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace ex02 {
 

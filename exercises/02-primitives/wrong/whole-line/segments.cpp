@@ -2,7 +2,7 @@
 // q, forgetting that a segment is the part of the line between them.
 #include "segments.hpp"
 
-#include <t2/orient.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex02 {
 

@@ -3,7 +3,7 @@
 // segment is kept, dropped or cut at the wrong end.
 #include "clip.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex02b {
 

@@ -4,7 +4,7 @@
 // the one-point segment p = q is forgotten.
 #include "clip.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex02b {
 

@@ -3,7 +3,7 @@
 // segment crosses l: the clipped piece ends on the wrong side of the sphere.
 #include "clip.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex02b {
 

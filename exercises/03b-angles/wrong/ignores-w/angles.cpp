@@ -2,7 +2,7 @@
 // weights: right when every w is 1, wrong for [2, 2, 0], which is the point (1, 0).
 #include "angles.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex03b {
 

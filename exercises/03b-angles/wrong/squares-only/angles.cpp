@@ -2,7 +2,7 @@
 // angle is taken for the acute angle with the same |cos| (120° for 60°).
 #include "angles.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex03b {
 

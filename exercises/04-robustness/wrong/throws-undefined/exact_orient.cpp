@@ -3,7 +3,7 @@
 // an input where it must not be thrown.
 #include "exact_orient.hpp"
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace ex04 {
 

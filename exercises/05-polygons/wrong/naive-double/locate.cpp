@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace ex05 {
 

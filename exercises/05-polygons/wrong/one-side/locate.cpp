@@ -11,8 +11,8 @@
 //    of the lowest-then-leftmost vertex's corner, which is convex.
 #include "locate.hpp"
 
-#include <t2/filter.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/filter.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex05 {
 

@@ -5,8 +5,8 @@
 // sphere "cross".
 #include "crossing.hpp"
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex05b {
 

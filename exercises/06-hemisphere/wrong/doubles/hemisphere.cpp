@@ -6,9 +6,9 @@
 #include <array>
 #include <optional>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex06 {
 

@@ -3,7 +3,7 @@
 // every other hemisphere (a line through the plane, tilted) and Ω.
 #include "hemisphere.hpp"
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace ex06 {
 

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include <t2/orient.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex06b {
 

@@ -4,7 +4,7 @@
 // side with no point of Ω.
 #include "width.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex07 {
 

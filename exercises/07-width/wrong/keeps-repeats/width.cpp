@@ -6,8 +6,8 @@
 #include <array>
 #include <string>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex07 {
 

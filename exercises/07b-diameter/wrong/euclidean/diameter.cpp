@@ -4,7 +4,7 @@
 // distance is beyond infinity) or points of Ω (+∞).
 #include "diameter.hpp"
 
-#include <t2/number.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex07b {
 

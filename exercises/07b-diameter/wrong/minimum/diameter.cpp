@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include <t2/error.hpp>
-#include <t2/number.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/number.hpp>
 
 namespace ex07b {
 

@@ -7,8 +7,8 @@
 #include <array>
 #include <tuple>
 
-#include <t2/orient.hpp>
-#include <t2/point.hpp>
+#include <t2/kernel/orient.hpp>
+#include <t2/kernel/point.hpp>
 
 namespace ex08b {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include <t2/orient.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex09 {
 

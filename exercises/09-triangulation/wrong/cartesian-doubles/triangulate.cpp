@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include <t2/lexicographic.hpp>
+#include <t2/kernel/lexicographic.hpp>
 
 namespace ex09 {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <numeric>
 
-#include <t2/lexicographic.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/lexicographic.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex09 {
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <utility>
 
-#include <t2/orient.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex09b {
 

@@ -9,9 +9,9 @@
 #include <random>
 #include <utility>
 
-#include <t2/error.hpp>
-#include <t2/incircle.hpp>
-#include <t2/orient.hpp>
+#include <t2/kernel/error.hpp>
+#include <t2/kernel/incircle.hpp>
+#include <t2/kernel/orient.hpp>
 
 namespace ex10b {
 

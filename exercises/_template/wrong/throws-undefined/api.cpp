@@ -3,7 +3,7 @@
 // an input where it must not be thrown (tests/test_exercises.cpp checks it for every exercise).
 #include "api.hpp"
 
-#include <t2/error.hpp>
+#include <t2/kernel/error.hpp>
 
 namespace exNN {
 

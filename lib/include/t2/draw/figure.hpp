@@ -12,16 +12,16 @@
 #include <type_traits>
 #include <vector>
 
-#include "t2/bbox.hpp"
-#include "t2/circle.hpp"
+#include "t2/kernel/bbox.hpp"
+#include "t2/kernel/circle.hpp"
 #include "t2/draw/style.hpp"
-#include "t2/isorect.hpp"
-#include "t2/line.hpp"
-#include "t2/point.hpp"
-#include "t2/ray.hpp"
-#include "t2/segment.hpp"
-#include "t2/t1.hpp"
-#include "t2/triangle.hpp"
+#include "t2/kernel/isorect.hpp"
+#include "t2/kernel/line.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/ray.hpp"
+#include "t2/kernel/segment.hpp"
+#include "t2/kernel/t1.hpp"
+#include "t2/kernel/triangle.hpp"
 
 namespace t2::draw {
 

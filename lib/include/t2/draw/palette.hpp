@@ -3,13 +3,13 @@
 /// @brief The colours of the figures: one palette for items, one for the models' own marks and
 /// a few marks of particular figures.
 ///
-/// Scene files name the item colours (`color=dark_grey`): t2/scene_colors.hpp, in the kernel.
+/// Scene files name the item colours (`color=dark_grey`): t2/kernel/scene_colors.hpp, in the kernel.
 ///
 /// Item colours are the ten "category" colours of matplotlib and d3 (distinct in colour, and
 /// of distinct lightness where it matters); the decorations of the models (Ω, axes, outline,
 /// shading) are greys and one light blue, so that they never compete with the items.
 
-#include "t2/scene_colors.hpp"
+#include "t2/kernel/scene_colors.hpp"
 
 namespace t2::draw::palette {
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "t2/draw/render.hpp"
-#include "t2/polyhedron.hpp"
+#include "t2/kernel/polyhedron.hpp"
 
 namespace t2::draw {
 

@@ -11,7 +11,7 @@
 
 #include "t2/draw/figure.hpp"
 #include "t2/draw/palette.hpp"
-#include "t2/scene.hpp"
+#include "t2/kernel/scene.hpp"
 
 namespace t2::draw {
 

@@ -14,9 +14,9 @@
 #include <string_view>
 #include <vector>
 
-#include "t2/point.hpp"
-#include "t2/polygon.hpp"
-#include "t2/segment.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/polygon.hpp"
+#include "t2/kernel/segment.hpp"
 
 namespace t2::gen {
 

@@ -25,10 +25,10 @@
 #include <utility>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/filter.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/filter.hpp"
 #include "t2/hull/convex_hull.hpp"
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
@@ -169,8 +169,8 @@ struct Width {
 /// The width of the points P (the least distance between two parallel lines holding them all),
 /// by the calipers on their hull: O(n log n). Proper points on one side of T² only (else
 /// `BadInput`); `std::nullopt` when the hull has fewer than three vertices (the width is 0).
-/// The kernel K is that of the hull (kernel.hpp).
-template <class K = ExactKernel>
+/// The traits K are those of the hull (traits.hpp).
+template <class K = HullTraits>
 std::optional<Width> width(std::span<const Point> P) {
   for (const Point& p : P)
     if (p.w() == 0 || (p.w() < 0) != (P[0].w() < 0))

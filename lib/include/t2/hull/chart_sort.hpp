@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2::detail {
 

@@ -10,7 +10,7 @@
 
 #include "t2/hull/graham.hpp"
 #include "t2/hull/jarvis.hpp"
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 #include "t2/hull/merge.hpp"
 #include "t2/hull/monotone.hpp"
 #include "t2/hull/quickhull.hpp"
@@ -45,9 +45,9 @@ inline std::string_view name(HullAlgorithm a) {
 /// anywhere. One point gives one index, collinear points the two ends of their segment, no
 /// point none. Throws `NoHull` (a `t2::Undefined`) naming the points that prevent a hull when
 /// P lies in no open hemisphere (an antipodal pair, an antipode on a segment or in a triangle of
-/// the others). On front-only input this is the classic hull. Exact; the kernel K and the trace
-/// are those of kernel.hpp.
-template <class K = ExactKernel, class Tr = NoTrace>
+/// the others). On front-only input this is the classic hull. Exact; the traits K and the trace
+/// are those of traits.hpp.
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> convex_hull(std::span<const Point> P, HullAlgorithm a = HullAlgorithm::automatic,
                                      Tr&& trace = {}) {
   if (P.empty()) return {};
@@ -68,14 +68,14 @@ std::vector<std::size_t> convex_hull(std::span<const Point> P, HullAlgorithm a =
 }
 
 /// The hull of a vector of points (see the span overload).
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> convex_hull(const std::vector<Point>& P, HullAlgorithm a = HullAlgorithm::automatic,
                                      Tr&& trace = {}) {
   return convex_hull<K>(std::span<const Point>(P), a, std::forward<Tr>(trace));
 }
 
 /// True when the points lie in an open hemisphere of T², i.e. have a hull (Algorithm 3).
-template <class K = ExactKernel>
+template <class K = HullTraits>
 bool has_hull(std::span<const Point> P) {
   try {
     merge_hull<K>(P);

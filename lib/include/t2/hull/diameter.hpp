@@ -24,10 +24,10 @@
 #include <utility>
 #include <vector>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull/calipers.hpp"
 #include "t2/hull/convex_hull.hpp"
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
@@ -37,7 +37,7 @@ namespace t2 {
 /// front–back pair nearest as drawn, by brute force (O(n²); chapter 11's Voronoi diagram does it
 /// in O(n log n)). Points of Ω: +∞ with any proper point. Throws `Undefined` when two different
 /// points lie on Ω (their distance is an angle, comparable with no other).
-template <class K = ExactKernel>
+template <class K = HullTraits>
 std::optional<std::pair<std::size_t, std::size_t>> diameter(std::span<const Point> P) {
   if (P.empty()) return std::nullopt;
   std::vector<std::size_t> front, back, omega;

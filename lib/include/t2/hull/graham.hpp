@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
@@ -18,7 +18,7 @@ namespace t2 {
 /// orders them by angle (a before b when b lies left of o → a). Points on one ray from o come
 /// nearest first, except on the last ray, where they come farthest first: then the scan pops
 /// every point inside a hull edge, including those of the closing edge back to o.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> graham(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                                 Tr&& trace = {}) {
   const ChartOrder<K> order{chart};

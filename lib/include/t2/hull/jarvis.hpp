@@ -10,13 +10,13 @@
 #include <span>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
 /// Jarvis's march on the points P[i], i in `idx`, in `chart`: the strict hull vertices,
 /// counter-clockwise from the first in the chart's order.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> jarvis(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                                 Tr&& trace = {}) {
   const ChartOrder<K> order{chart};

@@ -11,7 +11,7 @@
 /// and the h_j add up to at most n, so O(n²) in all; with Graham's scan each layer costs
 /// O(n log n), so O(n² log n) when there are Θ(n) layers. (Chazelle's O(n log n) algorithm is
 /// only cited by the seed.) In T² a subset of points in an open hemisphere lies in that
-/// hemisphere too: one chart (kernel.hpp) serves every layer, and the existence test runs once.
+/// hemisphere too: one chart (traits.hpp) serves every layer, and the existence test runs once.
 
 #include <cstddef>
 #include <numeric>
@@ -20,7 +20,7 @@
 
 #include "t2/hull/graham.hpp"
 #include "t2/hull/jarvis.hpp"
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 #include "t2/hull/merge.hpp"
 
 namespace t2 {
@@ -34,7 +34,7 @@ enum class LayersMethod {
 /// The convex layers of the points P: layer j holds the strict hull vertices of what the layers
 /// before it left (indices into P, counter-clockwise in T², one index for equal points). Throws
 /// `NoHull` when P lies in no open hemisphere (then not even the outer layer exists).
-template <class K = ExactKernel>
+template <class K = HullTraits>
 std::vector<std::vector<std::size_t>> convex_layers(std::span<const Point> P,
                                                     LayersMethod method = LayersMethod::jarvis) {
   std::vector<std::vector<std::size_t>> layers;

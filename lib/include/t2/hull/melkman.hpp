@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 #include "t2/hull/merge.hpp"
 
 namespace t2 {
@@ -49,7 +49,7 @@ bool on_collinear_segment(const Point& u, const Point& v, const Point& p) {
 /// Preconditions: P is simple and lies in an open hemisphere (every front-only polygon does;
 /// `polygon_hull` checks the hemisphere). Repeated consecutive vertices are allowed. Degenerate
 /// polygons (fewer than three distinct vertices, or all collinear) give their point or segment.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> melkman(std::span<const Point> P, Tr&& trace = {}) {
   std::vector<std::size_t> v;  // the vertices, repeated neighbours dropped
   for (std::size_t i = 0; i < P.size(); ++i)
@@ -106,7 +106,7 @@ std::vector<std::size_t> melkman(std::span<const Point> P, Tr&& trace = {}) {
 /// The hull of a simple polygon: `melkman` after checking that P lies in an open hemisphere
 /// when some vertex is not on the front side (that check is `merge_hull`, O(n log n); front-only
 /// polygons skip it and take O(n)). Throws `NoHull` when there is no hemisphere.
-template <class K = ExactKernel>
+template <class K = HullTraits>
 std::vector<std::size_t> polygon_hull(std::span<const Point> P) {
   for (const Point& p : P)
     if (p.w() <= 0) {

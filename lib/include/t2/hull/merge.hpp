@@ -28,7 +28,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 #include "t2/hull/monotone.hpp"
 
 namespace t2 {
@@ -101,7 +101,7 @@ auto renumbered(Tr& trace, std::span<const std::size_t> to) {
 /// Adds the point P[q] to the convex polygon H (strict vertices, counter-clockwise, in an
 /// open hemisphere; 0, 1 or 2 vertices allowed): H becomes the hull of H ∪ {q}. Throws
 /// `NoHull` naming the points when there is none.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std::size_t q, Tr&& trace = {}) {
   const Point& Q = P[q];
   if (H.empty()) {
@@ -157,7 +157,7 @@ void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std
 /// throws `NoHull` when the points lie in no open hemisphere. The trace hears the monotone
 /// chain of each half (the negative one on the antipodes, with input indices), each half's
 /// hull (`HullStep::half`, index 1 or 2, the strict vertices counter-clockwise) and the bridges.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
   //> hull-merge
   std::vector<std::size_t> pos, neg;
@@ -188,10 +188,10 @@ std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
   return H;
 }
 
-/// A chart (kernel.hpp) valid for every point of P: the plain one when all are on the front
+/// A chart (traits.hpp) valid for every point of P: the plain one when all are on the front
 /// side, else one built from an edge of the hull found by `merge_hull` (which throws `NoHull`
 /// when there is no hull). `hull` receives that hull when it was computed (else it is empty).
-template <class K = ExactKernel>
+template <class K = HullTraits>
 Chart chart_for(std::span<const Point> P, std::vector<std::size_t>& hull) {
   hull.clear();
   if (std::all_of(P.begin(), P.end(), [](const Point& p) { return p.w() > 0; })) return front_chart();

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "t2/hull/chart_sort.hpp"
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
@@ -46,10 +46,10 @@ void chain_step(Chain& h, std::size_t floor, std::size_t j, Tr& trace) {
 
 }  // namespace detail
 
-/// Andrew's monotone chain on the points P[i], i in `idx`, in the chart `chart` (kernel.hpp):
+/// Andrew's monotone chain on the points P[i], i in `idx`, in the chart `chart` (traits.hpp):
 /// the indices of the strict hull vertices, counter-clockwise, starting at the first in the
 /// chart's order. O(n log n). The points must lie where the chart is valid.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> monotone_chain(std::span<const Point> P, std::vector<std::size_t> idx, const Chart& chart,
                                         Tr&& trace = {}) {
   //> hull-monotone
@@ -103,7 +103,7 @@ inline std::vector<std::size_t> octagon(std::span<const Point> P) {
 /// came in. Most points are dropped by four plain comparisons first: a box whose corners pass
 /// that test lies inside Q (the set left of every edge is convex). Same answer as
 /// `monotone_chain`.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> akl_toussaint(std::span<const Point> P, const Chart& chart, Tr&& trace = {}) {
   const ChartOrder<K> order{chart};
   std::vector<std::size_t> keep;

@@ -37,12 +37,12 @@
 #include <string>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/line.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
-#include "t2/polygon.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/line.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/polygon.hpp"
 
 namespace t2 {
 

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
+#include "t2/hull/traits.hpp"
 
 namespace t2 {
 
@@ -92,7 +92,7 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
 
 /// Quickhull on the points P[i], i in `idx`, in `chart`: the strict hull vertices,
 /// counter-clockwise from the first in the chart's order. O(n log n) on average, O(nh) at worst.
-template <class K = ExactKernel, class Tr = NoTrace>
+template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> quickhull(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                                    Tr&& trace = {}) {
   const ChartOrder<K> order{chart};

@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "t2/orient3d.hpp"
-#include "t2/orient_double.hpp"
+#include "t2/kernel/orient3d.hpp"
+#include "t2/kernel/detail/orient_double.hpp"
 
 namespace t2 {
 

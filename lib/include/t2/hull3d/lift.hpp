@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "t2/hull3d/facets.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 
 namespace t2 {
 

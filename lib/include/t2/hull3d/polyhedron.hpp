@@ -1,7 +1,7 @@
 #pragma once
 /// @file polyhedron.hpp
 /// @brief Polyhedra of R³ as face lists (seed 004 §6.1; the type `Polyhedron` is in the kernel,
-/// t2/polyhedron.hpp): Euler's formula and exact certificates of a closed surface and of a
+/// t2/kernel/polyhedron.hpp): Euler's formula and exact certificates of a closed surface and of a
 /// convex polyhedron.
 ///
 /// A face list holds one kind of adjacency only (vertices of a face); the others — the faces
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "t2/orient3d.hpp"
-#include "t2/polyhedron.hpp"
+#include "t2/kernel/orient3d.hpp"
+#include "t2/kernel/polyhedron.hpp"
 
 namespace t2 {
 

@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "t2/incircle.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/trace/recording.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulation.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 /// @file hull_recorder.hpp
-/// @brief A trace for the hull algorithms (hull/kernel.hpp) that records every step it is told
+/// @brief A trace for the hull algorithms (hull/traits.hpp) that records every step it is told
 /// of as a `Step`: explained in words, with the stack or hull so far, and what to highlight.
 ///
 /// The hull algorithms report `trace(step, index, chain)`; this recorder turns the report into
@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "t2/hull/kernel.hpp"
-#include "t2/point.hpp"
+#include "t2/hull/traits.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/trace/recording.hpp"
 
 namespace t2::trace {
@@ -57,7 +57,7 @@ class HullRecorder {
     else if (std::none_of(P.begin(), P.end(), positive)) only_ = 2;
   }
 
-  /// The trace call of hull/kernel.hpp.
+  /// The trace call of hull/traits.hpp.
   void operator()(HullStep step, std::size_t i, std::span<const std::size_t> chain) {
     const std::vector<std::size_t> c(chain.begin(), chain.end());
     switch (algo_) {
@@ -157,8 +157,8 @@ class HullRecorder {
       text = point_name(i) + " is the first candidate for the vertex after " + point_name(u_) + ".";
     } else {
       const std::size_t q = cand_;
-      const Sign s = ExactKernel::orient(P_[u_], P_[q], P_[i]);
-      const ChartOrder<ExactKernel> order{chart_};
+      const Sign s = HullTraits::orient(P_[u_], P_[q], P_[i]);
+      const ChartOrder<HullTraits> order{chart_};
       if (s < 0) {
         cand_ = i;
         text = point_name(i) + " lies right of " + point_name(u_) + " → " + point_name(q) + ": it replaces " +

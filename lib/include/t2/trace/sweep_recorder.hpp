@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "t2/lexicographic.hpp"
+#include "t2/kernel/lexicographic.hpp"
 #include "t2/trace/recording.hpp"
 #include "t2/triangulation/triangulation.hpp"
 

@@ -51,9 +51,9 @@
 /// between antipodes appears (a proper triangle lies in an open hemisphere, so it never holds
 /// both a point and its antipode; a lune holds only its own two).
 
-#include "t2/number.hpp"
-#include "t2/point.hpp"
-#include "t2/sign.hpp"
+#include "t2/kernel/number.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/sign.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {

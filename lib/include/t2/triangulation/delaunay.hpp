@@ -64,10 +64,10 @@
 /// `t2 bench delaunay --n 1000000 --vs owned,cgal` measures both (the peak resident memory of
 /// the process, which adds about 4 MB of code and libraries to these counts).
 ///
-/// **Kernel.** `delaunay_with<K>` takes the predicates from a kernel type K (orient, in_circle,
+/// **Traits.** `delaunay_with<K>` takes the predicates from a traits type K (orient, in_circle,
 /// compare_xy on `t2::Point`) and calls its trace hooks (inserted, flipped); the default
-/// `DelaunayKernel` calls the exact `t2::orient`, `t2::in_circle` and `t2::compare_xy` and
-/// traces nothing, at no cost. A faster kernel or an animation trace drops in without touching
+/// `DelaunayTraits` calls the exact `t2::orient`, `t2::in_circle` and `t2::compare_xy` and
+/// traces nothing, at no cost. Faster traits or an animation trace drop in without touching
 /// the algorithm.
 
 #include <algorithm>
@@ -76,18 +76,18 @@
 #include <span>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/incircle.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
 
-/// The default kernel of `delaunay_with`: the exact predicates of the library, no trace.
-struct DelaunayKernel {
+/// The default traits of `delaunay_with`: the exact predicates of the library, no trace.
+struct DelaunayTraits {
   /// Exact orientation of three points.
   static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
   /// Exact oriented in-circle test.
@@ -269,11 +269,11 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
 }  // namespace detail
 
 //> delaunay
-/// The Delaunay triangulation of points of T² with the predicates of kernel K; see the file
+/// The Delaunay triangulation of points of T² with the predicates of traits K; see the file
 /// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
 /// not all in front. Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
 /// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
-template <class K = DelaunayKernel>
+template <class K = DelaunayTraits>
 Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }))
     return detail::delaunay_t2(input, kernel);
@@ -290,7 +290,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
 /// The same on a vector of points that the result takes over: `points()` of the result holds
 /// them afterwards, in the same order. The construction keeps one copy of the points instead of
 /// two: 84 bytes a point at the peak against 104 (see the file comment), in about the same time.
-template <class K = DelaunayKernel>
+template <class K = DelaunayTraits>
 Triangulation delaunay_with(std::vector<Point>&& points, K kernel = {}) {
   const std::span<const Point> input(points);
   if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }) ||

@@ -25,9 +25,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "t2/angle.hpp"
-#include "t2/point.hpp"
-#include "t2/sign_sqrt.hpp"
+#include "t2/kernel/angle.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/sign_sqrt.hpp"
 #include "t2/triangulation/face_disk.hpp"
 #include "t2/triangulation/triangulation.hpp"
 

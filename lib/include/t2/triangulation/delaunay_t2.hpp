@@ -96,11 +96,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "t2/angle.hpp"
-#include "t2/error.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/angle.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/delaunay_ring.hpp"
 #include "t2/triangulation/triangulation.hpp"
@@ -269,7 +269,7 @@ inline void append_linked(const std::vector<std::array<Triangulation::Index, 3>>
 
 //> delaunay-t2
 /// The Delaunay triangulation of points of T² not all in front (see the file comment); the
-/// planar triangulations of each side use kernel K.
+/// planar triangulations of each side use traits K.
 template <class K>
 Triangulation delaunay_t2(std::span<const Point> input, const K& kernel) {
   using Index = Triangulation::Index;

@@ -45,8 +45,8 @@
 #include <utility>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/quadedge.hpp"
 #include "t2/triangulation/triangulate.hpp"
@@ -195,10 +195,10 @@ inline void assign_from_quadedge(QuadEdge& q, QuadEdge::Edge outer, std::size_t 
 
 //> divide
 /// The Delaunay triangulation of front points (w > 0) by Guibas and Stolfi's divide and
-/// conquer with the predicates of kernel K (see the file comment): the same triangles, hull
+/// conquer with the predicates of traits K (see the file comment): the same triangles, hull
 /// and duplicates as `delaunay_with<K>`. Throws `Undefined` for a point with w ≤ 0,
 /// `BadInput` for more than 715 827 882 points.
-template <class K = DelaunayKernel>
+template <class K = DelaunayTraits>
 Triangulation delaunay_divide_with(std::span<const Point> input, K kernel = {}) {
   using Index = Triangulation::Index;
   for (std::size_t k = 0; k < input.size(); ++k)

@@ -34,13 +34,13 @@
 /// POSITIVE inside, ZERO on the circle, NEGATIVE outside. Throws `Undefined` for three points
 /// on one line without an antipodal pair, and for a face p, z, ¬z (its arc of Ω is either half).
 
-#include "t2/error.hpp"
-#include "t2/filter.hpp"
-#include "t2/incircle.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
-#include "t2/sign.hpp"
-#include "t2/sign_sqrt.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/filter.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/sign.hpp"
+#include "t2/kernel/sign_sqrt.hpp"
 
 namespace t2 {
 

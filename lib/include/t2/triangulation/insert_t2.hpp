@@ -24,9 +24,9 @@
 #include <utility>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulate.hpp"

@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "t2/error.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/triangulate.hpp"
 #include "t2/triangulation/triangulation.hpp"
@@ -50,7 +50,7 @@ inline bool is_legal(const Triangulation& tr, Triangulation::Index t, int i) {
   const Triangulation::Index e = tr.twin(t, i), u = e / 3;
   if (tr.is_infinite(t) || tr.is_infinite(u)) return true;
   const Point& d = tr.point(tr.vertex(u, static_cast<int>(e % 3)));
-  return perturbed_in_circle(DelaunayKernel{}, tr.point(tr.vertex(t, 0)),
+  return perturbed_in_circle(DelaunayTraits{}, tr.point(tr.vertex(t, 0)),
                              tr.point(tr.vertex(t, 1)), tr.point(tr.vertex(t, 2)),
                              d) == NEGATIVE;
 }

@@ -28,7 +28,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 
 namespace t2 {
 

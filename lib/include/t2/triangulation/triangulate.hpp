@@ -39,10 +39,10 @@
 #include <string>
 #include <vector>
 
-#include "t2/error.hpp"
-#include "t2/lexicographic.hpp"
-#include "t2/orient.hpp"
-#include "t2/point.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/lexicographic.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 

@@ -63,7 +63,7 @@
 #include <span>
 #include <vector>
 
-#include "t2/point.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/triangulation.hpp"
 

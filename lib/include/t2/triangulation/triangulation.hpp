@@ -70,8 +70,8 @@
 #include <utility>
 #include <vector>
 
-#include "t2/point.hpp"
-#include "t2/sign.hpp"
+#include "t2/kernel/point.hpp"
+#include "t2/kernel/sign.hpp"
 
 namespace t2 {
 
