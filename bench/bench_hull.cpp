@@ -86,7 +86,7 @@ BENCHMARK_CAPTURE(BM_HullVsCgal, kuzmin, t2::gen::Kind::kuzmin)->Iterations(3)->
 // T² (its negative half's chain goes through a renumbering trace only when a trace listens).
 struct CountingTrace {
   long steps = 0;
-  void operator()(t2::HullStep, std::size_t, std::span<const std::size_t>) { ++steps; }
+  void operator()(const t2::trace::Report&) { ++steps; }
 };
 
 std::vector<t2::Point> trace_input(t2::gen::Kind k) {

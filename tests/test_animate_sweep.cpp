@@ -63,9 +63,8 @@ std::vector<std::vector<Point>> inputs() {
 TEST(SweepRecorder, OneLectureStepPerPointEachATriangulationOfThePointsSoFar) {
   for (const auto& P : inputs()) {
     Recording rec;
-    trace::SweepRecorder r(P, rec);
+    trace::SweepRecorder r(rec);
     const Triangulation t = triangulate(std::span<const Point>(P), r);
-    r.finish();
     const Triangulation plain = triangulate(P);
     ASSERT_EQ(sorted_triangles(t), sorted_triangles(plain));  // the trace changes nothing
     ASSERT_EQ(t.hull_edges(), plain.hull_edges());
@@ -112,9 +111,8 @@ TEST(SweepRecorder, OneLectureStepPerPointEachATriangulationOfThePointsSoFar) {
 TEST(SweepRecorder, NoTriangleNoStep) {
   for (const std::vector<Point>& P : {std::vector<Point>{}, {Point::cartesian(0, 0), Point::cartesian(1, 1), Point::cartesian(2, 2)}}) {
     Recording rec;
-    trace::SweepRecorder r(P, rec);
+    trace::SweepRecorder r(rec);
     (void)triangulate(std::span<const Point>(P), r);
-    r.finish();
     EXPECT_TRUE(rec.empty());
   }
 }

@@ -1,11 +1,15 @@
 // The trace recorders of t2/trace: what they record last is the algorithm's answer, computed by
 // the algorithm itself (recording changes nothing), and the recorded steps agree with
 // properties of the answer that the recorder does not know (a popped point is no vertex; the
-// candidate Jarvis's recorder follows is the vertex the march chose; a flip's two triangles
-// are in the triangulation after it).
+// candidate Jarvis names before a vertex is that vertex; a flip's two triangles are in the
+// triangulation after it). The steps' indices are the input's: every claim a step makes is
+// checked with the exact predicates on the input points of those indices, so a step that named
+// a point of the algorithm's private order would fail.
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <numeric>
 #include <set>
 #include <span>
@@ -14,6 +18,7 @@
 #include "animate_testing.hpp"
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
+#include "t2/kernel/incircle.hpp"
 #include "t2/trace/delaunay_recorder.hpp"
 #include "t2/trace/hull_recorder.hpp"
 #include "t2/trace/recording.hpp"
@@ -55,7 +60,7 @@ std::vector<std::vector<Point>> front_inputs() {
 TEST(HullRecorder, GrahamRecordsItsAnswerLastAndPopsNoVertex) {
   for (const auto& P : front_inputs()) {
     Recording rec;
-    HullRecorder r(HullAlgo::graham, P, front_chart(), rec);
+    HullRecorder r(HullAlgo::graham, P, rec);
     const auto h = graham(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
     ASSERT_FALSE(rec.empty());
     EXPECT_EQ(rec.back().chain, h);
@@ -82,12 +87,32 @@ TEST(HullRecorder, GrahamRecordsItsAnswerLastAndPopsNoVertex) {
 TEST(HullRecorder, JarvisFollowsTheCandidateToEveryVertex) {
   for (const auto& P : front_inputs()) {
     Recording rec;
-    HullRecorder r(HullAlgo::jarvis, P, front_chart(), rec);
+    HullRecorder r(HullAlgo::jarvis, P, rec);
     const auto h = jarvis(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
-    EXPECT_TRUE(r.consistent());
     std::vector<std::size_t> vertices;
-    for (const auto& s : rec.steps())
-      if (s.kind == "vertex") vertices.push_back(s.points[0]);
+    const trace::Step* before = nullptr;  // the last consider step
+    std::size_t u = h.front();            // the last vertex
+    for (const auto& s : rec.steps()) {
+      if (s.kind == "vertex") {
+        vertices.push_back(s.points[0]);
+        if (before != nullptr) {
+          EXPECT_EQ(before->points[1], s.points[0]);  // the candidate it named
+        }
+        u = s.points[0];
+        continue;
+      }
+      ASSERT_EQ(s.kind, "consider");
+      // What the step says of i against u → candidate, checked on the input points.
+      const std::size_t i = s.points[0];
+      if (before != nullptr && before->kind == "consider" && s.text.find("first candidate") == std::string::npos) {
+        const std::size_t q = before->points[1];
+        const Sign o = orient(P[u], P[q], P[i]);
+        EXPECT_EQ(s.text.find(" lies right of ") != std::string::npos, o < 0) << s.text;
+        EXPECT_EQ(s.text.find(" lies left of ") != std::string::npos, o > 0) << s.text;
+        EXPECT_EQ(s.points[1], o < 0 ? i : o > 0 ? q : s.points[1]) << s.text;
+      }
+      before = &s;
+    }
     EXPECT_EQ(vertices, h);
     EXPECT_EQ(rec.back().chain, h);
     // The last candidate is the first vertex: the march closes the hull.
@@ -110,7 +135,7 @@ TEST(HullRecorder, MergeRecordsTheHullAtItsLastBridge) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const auto P = both_sides(seed);
     Recording rec;
-    HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
+    HullRecorder r(HullAlgo::merge, P, rec);
     const auto h = merge_hull(std::span<const Point>(P), r);
     EXPECT_EQ(h, merge_hull(std::span<const Point>(P)));
     // After the last bridge no insertion changes a hull of three or more vertices untraced.
@@ -158,7 +183,7 @@ TEST(HullRecorder, MergeShowsBothHalvesThenTheBridges) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const auto P = both_sides(seed);
     Recording rec;
-    HullRecorder r(HullAlgo::merge, P, lex_chart(), rec);
+    HullRecorder r(HullAlgo::merge, P, rec);
     merge_hull(std::span<const Point>(P), r);
     const auto& S = rec.steps();
     const auto is = [](const char* kind) { return [kind](const trace::Step& s) { return s.kind == kind; }; };
@@ -204,7 +229,7 @@ TEST(HullRecorder, MergeOfOneHalfShowsItsChain) {
   for (const auto* P : {&F, &B}) {
     const int side = P == &F ? 1 : -1;
     Recording rec;
-    HullRecorder r(HullAlgo::merge, *P, lex_chart(), rec);
+    HullRecorder r(HullAlgo::merge, *P, rec);
     const auto h = merge_hull(std::span<const Point>(*P), r);
     ASSERT_FALSE(h.empty());
     EXPECT_EQ(h, graham_of_side(*P, side, h.front()));
@@ -239,7 +264,7 @@ TEST(HullRecorder, MergeOfOneHalfShowsItsChain) {
 TEST(Recording, LevelsKeepTheOrderAndTheDepth) {
   const auto P = make(gen::Kind::uniform, 30, 7);
   Recording rec;
-  HullRecorder r(HullAlgo::graham, P, front_chart(), rec);
+  HullRecorder r(HullAlgo::graham, P, rec);
   graham(std::span<const Point>(P), iota_of(P.size()), front_chart(), r);
   const auto lecture = rec.at(Depth::lecture);
   const auto all = rec.at(Depth::debugging);
@@ -255,7 +280,7 @@ TEST(Recording, LevelsKeepTheOrderAndTheDepth) {
 TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
   for (const auto& P : front_inputs()) {
     Recording rec;
-    const Triangulation t = delaunay_with(std::span<const Point>(P), trace::DelaunayRecorder(P, rec));
+    const Triangulation t = delaunay_with(std::span<const Point>(P), DelaunayTraits{}, trace::DelaunayRecorder(P, rec));
     const auto expected = sorted_triangles(delaunay(P));  // the default traits: the same answer
     EXPECT_EQ(sorted_triangles(t), expected);
     if (t.dimension() < 2) continue;
@@ -276,22 +301,77 @@ TEST(DelaunayRecorder, RecordsTheTriangulationItReturns) {
   }
 }
 
-TEST(DelaunayRecorder, WithoutCirclesATriangulationOfTheSameHull) {
-  std::size_t differ = 0;
-  for (const auto& P : front_inputs()) {
+// Every claim of a Delaunay step, checked with the exact predicates on the input points that
+// the step names: an insertion's triangles are counter-clockwise and hold the new point; an
+// in-circle test's answer is the sign of in_circle (random points: no four on a circle, so no
+// perturbation); a flip's point lies inside the circle it names, and its two new triangles turn
+// counter-clockwise. A step naming the algorithm's private numbering would fail these.
+TEST(DelaunayRecorder, StepsNameInputIndices) {
+  std::size_t circles = 0, flips = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const auto P = make(gen::Kind::uniform, 40, seed);
     Recording rec;
-    const Triangulation t = delaunay_with(std::span<const Point>(P), trace::DelaunayRecorder(P, rec, true));
-    ASSERT_TRUE(t.valid()) << t.validate();
-    if (t.dimension() < 2) continue;
-    EXPECT_EQ(rec.back().triangles, sorted_triangles(t));
-    // Same vertices and hull as Delaunay's, so the same number of triangles (Euler).
-    const Triangulation d = delaunay(P);
-    EXPECT_EQ(t.finite_triangles().size(), d.finite_triangles().size());
-    EXPECT_EQ(t.hull_edges().size(), d.hull_edges().size());
-    differ += sorted_triangles(t) != sorted_triangles(d);
-    for (const auto& s : rec.steps()) EXPECT_NE(s.kind, "in-circle");
+    delaunay_with(std::span<const Point>(P), DelaunayTraits{}, trace::DelaunayRecorder(P, rec));
+    for (const auto& s : rec.steps()) {
+      const auto ccw = [&](const trace::Tri& f) { return orient(P[f[0]], P[f[1]], P[f[2]]) > 0; };
+      for (const auto& f : s.touched) EXPECT_TRUE(ccw(f)) << s.text;
+      for (const auto& f : s.triangles) ASSERT_TRUE(ccw(f)) << s.text;
+      if (s.kind == "insert") {
+        for (const auto& f : s.touched) EXPECT_TRUE(std::count(f.begin(), f.end(), s.points.at(0))) << s.text;
+      }
+      if (s.kind == "in-circle") {
+        ++circles;
+        const trace::Tri& f = s.touched.at(0);
+        const Sign in = in_circle(P[f[0]], P[f[1]], P[f[2]], P[s.points.at(0)]);
+        ASSERT_NE(in, ZERO);
+        EXPECT_EQ(s.text.find("Yes") != std::string::npos, in > 0) << s.text;
+      }
+      if (s.kind == "flip" && s.touched.size() == 2) {
+        ++flips;
+        // "pI lies inside the circle of pQ, pS, pD": the four numbers of the text, in order
+        std::vector<std::size_t> n;
+        for (std::size_t k = 0; k < s.text.size(); ++k)
+          if (s.text[k] == 'p' && k + 1 < s.text.size() && std::isdigit(static_cast<unsigned char>(s.text[k + 1])))
+            n.push_back(std::stoul(s.text.substr(k + 1)));
+        ASSERT_GE(n.size(), 4u) << s.text;
+        EXPECT_EQ(n[0], s.points.at(0));
+        EXPECT_GT(in_circle(P[n[1]], P[n[2]], P[n[3]], P[n[0]]) * orient(P[n[1]], P[n[2]], P[n[3]]), 0) << s.text;
+      }
+    }
   }
-  EXPECT_GT(differ, 0u);  // not secretly the Delaunay triangulation
+  EXPECT_GT(circles, 100u);
+  EXPECT_GT(flips, 50u);
+}
+
+// The circle a step speaks of is in its overlay: one circle through the three points it names
+// (its boundary point is one of them, exactly; its centre, an exact construction rounded once
+// to doubles, is as far from the other two up to that rounding), and no circle in other steps.
+TEST(DelaunayRecorder, TheOverlayCarriesTheCircle) {
+  const auto P = make(gen::Kind::disk, 30, 3);
+  Recording rec;
+  delaunay_with(std::span<const Point>(P), DelaunayTraits{}, trace::DelaunayRecorder(P, rec));
+  std::size_t drawn = 0;
+  for (const auto& s : rec.steps()) {
+    const bool speaks = s.text.find("circle") != std::string::npos;
+    ASSERT_EQ(s.overlay.circles.size(), speaks ? 1u : 0u) << s.text;
+    if (!speaks) continue;
+    ++drawn;
+    const Circle c = s.overlay.circles[0].circle();
+    std::vector<std::size_t> on;  // the named points of the circle: the touched triangle's, or the text's
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (s.text.find(point_name(i) + ",") != std::string::npos || s.text.find(point_name(i) + "?") != std::string::npos ||
+          s.text.find(point_name(i) + ":") != std::string::npos)
+        on.push_back(i);
+    ASSERT_EQ(on.size(), 3u) << s.text;
+    EXPECT_TRUE(std::any_of(on.begin(), on.end(), [&](std::size_t i) { return P[i] == c.boundary_point(); }));
+    const double cx = c.center().x() / c.center().w(), cy = c.center().y() / c.center().w();
+    const auto d2 = [&](std::size_t i) {
+      const mpq_class dx = mpq_class(P[i].x()) / P[i].w() - cx, dy = mpq_class(P[i].y()) / P[i].w() - cy;
+      return mpq_class(dx * dx + dy * dy);
+    };
+    for (std::size_t i : on) EXPECT_LT(mpq_class(abs(d2(i) - d2(on[0]))).get_d(), 1e-12 * d2(on[0]).get_d()) << s.text;
+  }
+  EXPECT_GT(drawn, 20u);
 }
 
 TEST(DelaunayRecorder, RecordsNothingForT2InputAndChangesNothing) {
@@ -300,9 +380,9 @@ TEST(DelaunayRecorder, RecordsNothingForT2InputAndChangesNothing) {
   o.seed = 4;
   const auto P = gen::points(gen::Kind::both_sides, o);  // each side triangulated apart
   Recording rec;
-  const trace::DelaunayRecorder k(P, rec);
-  EXPECT_FALSE(k.recording());
-  EXPECT_EQ(sorted_triangles(delaunay_with(std::span<const Point>(P), k)), sorted_triangles(delaunay(P)));
+  trace::DelaunayRecorder k(P, rec);
+  EXPECT_EQ(sorted_triangles(delaunay_with(std::span<const Point>(P), DelaunayTraits{}, k)),
+            sorted_triangles(delaunay(P)));
   EXPECT_TRUE(rec.empty());
 }
 

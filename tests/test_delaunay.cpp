@@ -174,27 +174,26 @@ TEST(Delaunay, PointsNotInFront) {
   EXPECT_EQ(delaunay(inf).validate(), "");
 }
 
-// The trace hooks of a kernel see every insertion and every flip.
-struct CountingTraits : DelaunayTraits {
+// The hook sees every insertion and every flip, and traits of one's own still apply.
+struct CountingHook {
   std::size_t inserted_count = 0, flips = 0;
-  void inserted(const Triangulation&, Triangulation::Index) { ++inserted_count; }
-  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++flips; }
+  void operator()(const trace::Report& r) {
+    inserted_count += r.event == trace::Event::insert;
+    flips += r.event == trace::Event::flip;
+  }
 };
 
-TEST(Delaunay, KernelTraceHooks) {
-  CountingTraits k;
+TEST(Delaunay, TraitsAndTraceHook) {
+  CountingHook k;
   const auto pts = testing::gen_points(gen::Kind::uniform, 1000, 11);
   struct Ref {
-    CountingTraits* k;
     static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
     static Sign in_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
       return t2::in_circle(a, b, c, d);
     }
     static Sign compare_xy(const Point& p, const Point& q) { return t2::compare_xy(p, q); }
-    void inserted(const Triangulation& t, Triangulation::Index v) { k->inserted(t, v); }
-    void flipped(const Triangulation& t, Triangulation::Index a, Triangulation::Index b) { k->flipped(t, a, b); }
   };
-  const Triangulation tr = delaunay_with(pts, Ref{&k});
+  const Triangulation tr = delaunay_with(pts, Ref{}, k);
   EXPECT_EQ(k.inserted_count, pts.size() - 3);  // the first triangle is not an insertion
   EXPECT_GT(k.flips, pts.size());               // about 3 flips per point on random input
   EXPECT_TRUE(triangle_set(tr) == triangle_set(delaunay(pts)));

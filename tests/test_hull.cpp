@@ -127,11 +127,11 @@ struct CountingTraits {
 };
 
 struct Recorder {
-  std::vector<HullStep> steps;
+  std::vector<trace::Event> steps;
   std::vector<std::size_t> last;
-  void operator()(HullStep s, std::size_t, std::span<const std::size_t> chain) {
-    steps.push_back(s);
-    last.assign(chain.begin(), chain.end());
+  void operator()(const trace::Report& r) {
+    steps.push_back(r.event);
+    last.assign(r.chain.begin(), r.chain.end());
   }
 };
 

@@ -175,10 +175,10 @@ void lawson() {
   std::cout << "\n";
 }
 
-// Counts the flips of the incremental algorithm through its trace hooks.
-struct Counting : t2::DelaunayTraits {
+// Counts the flips of the incremental algorithm through its trace hook (t2/trace/hook.hpp).
+struct Counting {
   std::size_t* flips;
-  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) { ++*flips; }
+  void operator()(const t2::trace::Report& r) { *flips += r.event == t2::trace::Event::flip; }
 };
 
 void incremental() {
@@ -191,7 +191,7 @@ void incremental() {
     const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
     std::size_t flips = 0;
     const Triangulation tr =
-        t2::delaunay_with(std::span<const Point>(P), Counting{{}, &flips});
+        t2::delaunay_with(std::span<const Point>(P), t2::DelaunayTraits{}, Counting{&flips});
     std::cout << kind << ": " << double(flips) / double(P.size()) << " flips per point, "
               << tr.finite_triangles().size() << " triangles\n";
   }

@@ -76,7 +76,7 @@ void detail::undefined_t2(std::span<const Point> input, Index p, Index a, Index 
 }
 
 TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how) {
-  return triangulate_t2(input, how, NoT2Trace{});
+  return triangulate_t2(input, how, NoTrace{});
 }
 
 }  // namespace t2

@@ -4,11 +4,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <numbers>
 
-#include "t2/kernel/circle.hpp"
 #include "t2/draw.hpp"
-#include "t2/kernel/error.hpp"
+#include "t2/draw/scene_figure.hpp"
 
 namespace t2cli::animate {
 namespace {
@@ -23,11 +24,45 @@ const char* const kHull = "#2ca02c";
 const char* const kFocus = "#d62728";
 const char* const kTouched = "#ff7f0e";
 const char* const kCircle = "#9467bd";
+constexpr int kSize = 360;  // each model's picture, in SVG units (the page scales it to its width)
 
 // A segment of T², unless it is undefined (equal or antipodal ends): then nothing.
 void segment(dr::Figure& f, const Point& a, const Point& b, const dr::Style& s) {
   if (a == b || a == t2::antipode(b)) return;
   f.segment(a, b, s);
+}
+
+// The points a step's text names ("p12"), which alone get labels: with every point labelled,
+// the labels of a few dozen points pile up into an unreadable heap.
+std::vector<bool> named(const std::string& text, std::size_t n) {
+  std::vector<bool> out(n, false);
+  for (std::size_t k = 0; k + 1 < text.size(); ++k) {
+    if (text[k] != 'p' || (k > 0 && std::isalnum(static_cast<unsigned char>(text[k - 1]))) ||
+        !std::isdigit(static_cast<unsigned char>(text[k + 1])))
+      continue;
+    std::size_t i = 0, j = k + 1;
+    for (; j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])) && i <= n; ++j)
+      i = 10 * i + static_cast<std::size_t>(text[j] - '0');
+    if (i < n && (j == text.size() || !std::isalnum(static_cast<unsigned char>(text[j])))) out[i] = true;
+  }
+  return out;
+}
+
+// The spherical view looking straight at the data: its eye is the mean of the points on the
+// sphere (the default view when they balance out).
+dr::SphereView sphere_view(const std::vector<Point>& P, int size) {
+  dr::SphereView v;
+  v.size = size;
+  dr::Vec3 m{0, 0, 0};
+  for (const auto& p : P) {
+    const dr::Vec3 s = dr::on_sphere(p);
+    m = {m.x + s.x, m.y + s.y, m.z + s.z};
+  }
+  const double r = std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
+  if (!(r > 1e-9 * static_cast<double>(P.size()))) return v;
+  v.lat = std::asin(std::clamp(m.z / r, -1.0, 1.0)) * 180 / std::numbers::pi;
+  v.lon = std::atan2(m.y, m.x) * 180 / std::numbers::pi;
+  return v;
 }
 
 dr::PlaneView plane_view(const std::vector<Point>& P) {
@@ -54,13 +89,11 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
     f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
           dr::Style().color(kTouched).width(1.6).fill(kTouched).fill_opacity(0.3).layer(1));
   }
-  if (s.circle.size() == 3) {  // the circle of an in-circle test
-    try {
-      f.add(t2::circle_through(P[s.circle[0]], P[s.circle[1]], P[s.circle[2]]),
-            dr::Style().color(kCircle).width(1.4).dash({5, 3}).layer(1));
-    } catch (const t2::Undefined&) {  // collinear or at infinity: no circle to draw
-    }
-  }
+  // What the algorithm constructed (a circle, a sweep line, ...): over the triangles.
+  dr::SceneStyles over = dr::SceneStyles::in(kCircle);
+  over.circle = dr::Style().color(kCircle).width(1.6).dash({5, 3}).layer(1);
+  over.point = dr::Style().color(kCircle).size(3.5).layer(5);
+  dr::add_scene(f, s.overlay, over);
   std::vector<Point> chain;
   for (std::size_t i : s.chain) chain.push_back(P[i]);
   const dr::Style ch = dr::Style().color(s.closed ? kHull : kChain).width(2.4).layer(2);
@@ -72,16 +105,16 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
   }
   for (const auto& e : s.edges)  // candidate edges, bridges, new edges
     segment(f, P[e[0]], P[e[1]], dr::Style().color(kFocus).width(2).dash({6, 3}).layer(3));
-  const bool labels = P.size() <= 40;
+  const std::vector<bool> label = named(s.text, P.size());
   for (std::size_t i = 0; i < P.size(); ++i) {
     const bool on_chain = std::find(s.chain.begin(), s.chain.end(), i) != s.chain.end();
     dr::Style st = dr::Style().color(on_chain ? "#000000" : kGrey).layer(4);
-    if (labels) st.label(fmt::format("p{}", i)).label_angle(45);
+    if (label[i]) st.label(fmt::format("p{}", i)).label_angle(45);
     f.add(P[i], st);
   }
   for (std::size_t k = 0; k < s.points.size(); ++k)  // the current point first, larger
     f.add(P[s.points[k]], dr::Style().color(kFocus).size(k == 0 ? 6 : 4.5).layer(5));
-  std::string svg = dr::render_both(f, plane_view(P), dr::SphereView());
+  std::string svg = dr::render_both(f, plane_view(P), sphere_view(P, kSize));
   if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
   return svg;
 }

@@ -5,10 +5,14 @@
 
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <string_view>
 
+#include "animate/delta.hpp"
 #include "animate/frame.hpp"
 #include "animate/player_html.hpp"
 
@@ -34,12 +38,105 @@ void replace(std::string& text, std::string_view marker, const std::string& by) 
 }
 
 nlohmann::json to_json(const t2::trace::Step& s) {
-  return {{"kind", s.kind},          {"depth", static_cast<int>(s.depth)},
-          {"text", s.text},          {"structure", s.structure},
-          {"chain", s.chain},        {"closed", s.closed},
-          {"triangles", s.triangles}, {"points", s.points},
-          {"edges", s.edges},        {"touched", s.touched},
-          {"circle", s.circle}};
+  return {{"kind", s.kind},   {"depth", static_cast<int>(s.depth)},
+          {"text", s.text},   {"structure", s.structure},
+          {"chain", s.chain}, {"closed", s.closed},
+          {"points", s.points}, {"edges", s.edges},
+          {"touched", s.touched}};
+}
+
+// A step's sequence `now` as the edit script from `before` (delta.hpp), when that is shorter than
+// `now` itself: {"d": script}; else {"f": now}.
+template <class T>
+nlohmann::json encoded(const std::vector<T>& before, const std::vector<T>& now) {
+  if (const auto groups = edit_script(before, now, now.size() / 2 + 8)) {
+    nlohmann::json d = nlohmann::json::array();
+    for (const EditGroup& g : *groups) {
+      d.push_back(g.copy);
+      d.push_back(g.skip);
+      d.push_back(g.count);
+      for (std::size_t k = g.from; k < g.from + g.count; ++k) d.push_back(now[k]);
+    }
+    return {{"d", std::move(d)}};
+  }
+  return {{"f", now}};
+}
+
+// Douglas–Peucker on pixel positions: the points of [a, b] that keep the polyline within `tol`
+// pixels of the original, marked in `keep`.
+void simplify(const std::vector<std::array<double, 2>>& p, std::size_t a, std::size_t b, double tol,
+              std::vector<bool>& keep) {
+  if (b <= a + 1) return;
+  const double dx = p[b][0] - p[a][0], dy = p[b][1] - p[a][1], len = std::hypot(dx, dy);
+  std::size_t far = a;
+  double most = -1;
+  for (std::size_t k = a + 1; k < b; ++k) {
+    const double ex = p[k][0] - p[a][0], ey = p[k][1] - p[a][1];
+    const double d = len > 0 ? std::abs(ex * dy - ey * dx) / len : std::hypot(ex, ey);
+    if (d > most) most = d, far = k;
+  }
+  if (most <= tol) return;
+  keep[far] = true;
+  simplify(p, a, far, tol, keep);
+  simplify(p, far, b, tol, keep);
+}
+
+// A number of a path in pixels, to 0.1 px ("12.5", "-3", "0").
+std::string px(double v) {
+  std::string t = fmt::format("{:.1f}", v);
+  if (t.ends_with(".0")) t.resize(t.size() - 2);
+  return t == "-0" ? "0" : t;
+}
+
+// The path data d made lighter when it is made of straight pieces only (M, L, Z): each piece
+// simplified to 0.25 px (Douglas–Peucker) and written to 0.1 px. A picture's pixels, not
+// geometry: the page is scaled to the screen, where a quarter pixel does not show. Curves (the
+// glyphs of the labels) are left as they are.
+std::string lighter_path(std::string_view d) {
+  if (d.find_first_not_of("MLZ0123456789.-+e ") != std::string_view::npos) return std::string(d);
+  std::string out;
+  std::vector<std::array<double, 2>> run;
+  auto flush = [&] {
+    if (run.empty()) return;
+    std::vector<bool> keep(run.size(), false);
+    keep.front() = keep.back() = true;
+    simplify(run, 0, run.size() - 1, 0.25, keep);
+    for (std::size_t k = 0; k < run.size(); ++k)
+      if (keep[k]) out += (k == 0 ? "M" : "L") + px(run[k][0]) + " " + px(run[k][1]);
+    run.clear();
+  };
+  std::istringstream in{std::string(d)};
+  std::string cmd;
+  while (in >> cmd) {
+    if (cmd == "Z") {
+      flush();
+      out += "Z";
+    } else {
+      if (cmd == "M") flush();
+      double x = 0, y = 0;
+      in >> x >> y;
+      run.push_back({x, y});
+    }
+  }
+  flush();
+  return out;
+}
+
+// A line of a frame made lighter: its style attribute replaced by a class of the page's style
+// sheet (`classes`: style -> number), its path data by `lighter_path`.
+std::string lighter(std::string_view line, std::map<std::string, std::size_t, std::less<>>& classes) {
+  std::string out(line);
+  if (const auto at = out.find(" style=\""); at != std::string::npos) {
+    const auto end = out.find('"', at + 8);
+    const std::string style = out.substr(at + 8, end - at - 8);
+    const auto it = classes.emplace(style, classes.size()).first;
+    out.replace(at, end + 1 - at, fmt::format(" class=\"f{}\"", it->second));
+  }
+  if (const auto at = out.find(" d=\""); at != std::string::npos) {
+    const auto end = out.find('"', at + 4);
+    out.replace(at + 4, end - at - 4, lighter_path(std::string_view(out).substr(at + 4, end - at - 4)));
+  }
+  return out;
 }
 
 }  // namespace
@@ -47,29 +144,39 @@ nlohmann::json to_json(const t2::trace::Step& s) {
 std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps) {
   std::string html(reinterpret_cast<const char*>(player_html), player_html_size);
   // The frames share most of their lines (the Ω ring, the sphere, the glyphs, the points): each
-  // distinct line of SVG is stored once, and a frame is the list of its lines' numbers.
-  std::map<std::string, std::size_t, std::less<>> number;
+  // distinct line of SVG is stored once, and a frame is the list of its lines' numbers. A step
+  // changes little: its frame and its triangles are stored as the edit from the step before
+  // (delta.hpp), which the player applies.
+  std::map<std::string, std::size_t, std::less<>> number, classes;
   nlohmann::json lines = nlohmann::json::array();
   nlohmann::json data = {{"title", title}, {"steps", nlohmann::json::array()}};
+  std::vector<std::size_t> previous;
+  std::vector<t2::trace::Tri> previous_triangles;
   for (const auto& s : steps) {
     nlohmann::json j = to_json(s);
     const std::string svg = frame_svg(P, s);
     std::vector<std::size_t> frame;
     for (std::size_t at = 0; at < svg.size();) {
       const std::size_t end = std::min(svg.find('\n', at), svg.size());
-      const std::string_view line(svg.data() + at, end - at);
+      const std::string line = lighter(std::string_view(svg.data() + at, end - at), classes);
       auto it = number.find(line);
       if (it == number.end()) {
-        it = number.emplace(std::string(line), lines.size()).first;
+        it = number.emplace(line, lines.size()).first;
         lines.push_back(it->first);
       }
       frame.push_back(it->second);
       at = end + 1;
     }
-    j["frame"] = frame;
+    j["frame"] = encoded(previous, frame);
+    j["triangles"] = encoded(previous_triangles, s.triangles);
+    previous = std::move(frame);
+    previous_triangles = s.triangles;
     data["steps"].push_back(std::move(j));
   }
   data["lines"] = std::move(lines);
+  std::string css;  // the frames' styles, one class each (`lighter`)
+  for (const auto& [style, k] : classes) css += fmt::format(".f{}{{{}}}\n", k, style);
+  data["css"] = css;
   std::string json = data.dump();
   for (auto at = json.find('<'); at != std::string::npos; at = json.find('<', at))  // no "</script" nor "<!--"
     json.replace(at, 1, "\\u003c");

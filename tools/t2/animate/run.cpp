@@ -52,14 +52,14 @@ void hull(const std::string& algo, const std::vector<t2::Point>& P, const std::s
   std::vector<std::size_t> h;
   try {
     if (algo == "merge-hull") {
-      tr::HullRecorder r(tr::HullAlgo::merge, P, t2::lex_chart(), rec);
+      tr::HullRecorder r(tr::HullAlgo::merge, P, rec);
       h = t2::merge_hull(std::span<const t2::Point>(P), r);
     } else {
       const t2::Chart chart = t2::chart_for(std::span<const t2::Point>(P), h);  // throws when no hull
       if (h.size() != 1) {
         std::vector<std::size_t> idx(P.size());
         std::iota(idx.begin(), idx.end(), std::size_t{0});
-        tr::HullRecorder r(algo == "jarvis" ? tr::HullAlgo::jarvis : tr::HullAlgo::graham, P, chart, rec);
+        tr::HullRecorder r(algo == "jarvis" ? tr::HullAlgo::jarvis : tr::HullAlgo::graham, P, rec);
         h = algo == "jarvis" ? t2::jarvis(std::span<const t2::Point>(P), idx, chart, r)
                              : t2::graham(std::span<const t2::Point>(P), idx, chart, r);
       }
@@ -95,41 +95,44 @@ void answer(const t2::Triangulation& t, const std::string& what, tr::Recording& 
   rec.add(std::move(s));
 }
 
-// Runs Algorithm 9 on T² (the triangulation of t2 triangulate for input not all in front) with a
-// recorder.
-void triangulate_t2(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
-  tr::TriangulateT2Recorder r(rec);
-  t2::TriangulationT2 t;
-  try {
-    t = t2::triangulate_t2(std::span<const t2::Point>(P), t2::InsertionOrder::spatial, r);
-  } catch (const t2::Undefined& e) {
-    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
-  }
-  answer(t.tr, "triangulation of T2 (Algorithm 9, t2 triangulate)", rec);
-}
-
-// Runs the Delaunay insertion (or the plain incremental triangulation) with a recorder; input
-// not all in front goes to Algorithm 9 on T² for `triangulate`.
-void triangulate(bool plain, const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
-  if (plain && !std::all_of(P.begin(), P.end(), [](const t2::Point& p) { return p.w() > 0; }))
-    return triangulate_t2(P, name, rec);
-  front_only(P, name, plain ? "triangulate" : "delaunay");
-  tr::DelaunayRecorder k(P, rec, plain);
+// Runs what `t2 triangulate` runs, with a recorder: the sweep for front points, Algorithm 9 on
+// T² for any other input.
+void triangulate(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  const bool front = std::all_of(P.begin(), P.end(), [](const t2::Point& p) { return p.w() > 0; });
   t2::Triangulation t;
   try {
-    t = t2::delaunay_with(std::span<const t2::Point>(P), k);
+    if (front) {
+      tr::SweepRecorder r(rec);
+      t = t2::triangulate(std::span<const t2::Point>(P), r);
+    } else {
+      tr::TriangulateT2Recorder r(rec);
+      t = t2::triangulate(std::span<const t2::Point>(P), r);
+    }
   } catch (const t2::Undefined& e) {
     throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
   }
-  answer(t, plain ? "incremental triangulation" : "Delaunay triangulation", rec);
+  answer(t, front ? "sweep triangulation (t2 triangulate)" : "triangulation of T2 (Algorithm 9, t2 triangulate)",
+         rec);
+}
+
+// Runs the Delaunay insertion with a recorder (front points only).
+void delaunay(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
+  front_only(P, name, "delaunay");
+  tr::DelaunayRecorder k(P, rec);
+  t2::Triangulation t;
+  try {
+    t = t2::delaunay_with(std::span<const t2::Point>(P), t2::DelaunayTraits{}, k);
+  } catch (const t2::Undefined& e) {
+    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
+  }
+  answer(t, "Delaunay triangulation", rec);
 }
 
 // Runs the sweep of t2 triangulate (chapter 09) with a recorder.
 void sweep(const std::vector<t2::Point>& P, const std::string& name, tr::Recording& rec) {
   front_only(P, name, "sweep");
-  tr::SweepRecorder r(P, rec);
+  tr::SweepRecorder r(rec);
   const t2::Triangulation t = t2::triangulate(std::span<const t2::Point>(P), r);
-  r.finish();
   answer(t, "sweep triangulation (t2 triangulate)", rec);
 }
 
@@ -139,7 +142,7 @@ const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = {{"jarvis", "Jarvis's march"},
                                              {"graham", "Graham's scan"},
                                              {"merge-hull", "the hemisphere-merge hull"},
-                                             {"triangulate", "incremental triangulation"},
+                                             {"triangulate", "the triangulation of t2 triangulate"},
                                              {"sweep", "the sweep triangulation"},
                                              {"delaunay", "randomized incremental Delaunay"}};
   return all;
@@ -160,8 +163,10 @@ std::string write_animation(const std::string& algo, const t2::Scene& scene, con
   rec.add(step("input", fmt::format("The input: {}. Next: {}.", range, title.substr(0, title.find(" of "))), ""));
   if (algo == "sweep")
     sweep(P, scene.name, rec);
-  else if (algo == "triangulate" || algo == "delaunay")
-    triangulate(algo == "triangulate", P, scene.name, rec);
+  else if (algo == "triangulate")
+    triangulate(P, scene.name, rec);
+  else if (algo == "delaunay")
+    delaunay(P, scene.name, rec);
   else
     hull(algo, P, scene.name, rec);
   t2::write_file_atomically(out, page(title, P, rec.steps()));

@@ -42,18 +42,18 @@ std::vector<std::size_t> graham(std::span<const Point> P, const std::vector<std:
   if (last != rest.begin()) std::reverse(last, rest.end());
   std::vector<std::size_t> stack{o};
   for (std::size_t i : rest) {
-    trace(HullStep::consider, i, stack);
+    tell(trace, trace::Event::consider, {i}, stack);
     while (stack.size() >= 2 &&
            K::orient(P[stack[stack.size() - 2]], P[stack.back()], P[i]) <= 0) {
-      trace(HullStep::pop, stack.back(), stack);
+      tell(trace, trace::Event::pop, {stack.back()}, stack);
       stack.pop_back();
     }
     stack.push_back(i);
-    trace(HullStep::push, i, stack);
+    tell(trace, trace::Event::push, {i}, stack);
   }
   while (stack.size() >= 3 &&
          K::orient(P[stack[stack.size() - 2]], P[stack.back()], O) <= 0) {
-    trace(HullStep::pop, stack.back(), stack);  // inside the closing edge
+    tell(trace, trace::Event::pop, {stack.back()}, stack);  // closing edge
     stack.pop_back();
   }
   //< hull-graham

@@ -15,7 +15,8 @@
 namespace t2 {
 
 /// Jarvis's march on the points P[i], i in `idx`, in `chart`: the strict hull vertices,
-/// counter-clockwise from the first in the chart's order.
+/// counter-clockwise from the first in the chart's order. The trace hears each vertex, and each
+/// point considered with the candidate before and after it and the sign Δ(u, before, point).
 template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> jarvis(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                                 Tr&& trace = {}) {
@@ -29,18 +30,20 @@ std::vector<std::size_t> jarvis(std::span<const Point> P, const std::vector<std:
   std::size_t u = start;
   do {
     hull.push_back(u);
-    trace(HullStep::vertex, u, hull);
+    tell(trace, trace::Event::vertex, {u}, hull);
     std::size_t q = u;  // no candidate yet
     for (std::size_t i : idx) {
       if (K::equal(P[i], P[u])) continue;
-      trace(HullStep::consider, i, hull);
       if (q == u) {
         q = i;
+        tell(trace, trace::Event::consider, {i, trace::Report::none, q}, hull);
         continue;
       }
       const Sign s = K::orient(P[u], P[q], P[i]);
+      const std::size_t before = q;
       if (s < 0 || (s == 0 && order.farther(P[u], P[q], P[i])))
         q = i;  // i right of u → q, or beyond q
+      tell(trace, trace::Event::consider, {i, before, q}, hull, s);  // with Δ(u, before, i)
     }
     u = q;
   } while (!K::equal(P[u], P[start]) && hull.size() <= idx.size());

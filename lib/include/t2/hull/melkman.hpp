@@ -83,21 +83,21 @@ std::vector<std::size_t> melkman(std::span<const Point> P, Tr&& trace = {}) {
   };
   for (std::size_t i = k + 1; i < v.size(); ++i) {
     const std::size_t p = v[i];
-    trace(HullStep::consider, p, deque());
+    tell(trace, trace::Event::consider, {p}, deque());
     // in a pocket
     if (inside(D[top - 1], D[top], p) && inside(D[bot], D[bot + 1], p)) continue;
     while (K::orient(P[D[top - 1]], P[D[top]], P[p]) <= 0) {
-      trace(HullStep::pop, D[top], deque());
+      tell(trace, trace::Event::pop, {D[top]}, deque());
       --top;
     }
     D[++top] = p;
-    trace(HullStep::push, p, deque());
+    tell(trace, trace::Event::push, {p}, deque());
     while (K::orient(P[p], P[D[bot]], P[D[bot + 1]]) <= 0) {
-      trace(HullStep::pop, D[bot], deque());
+      tell(trace, trace::Event::pop, {D[bot]}, deque());
       ++bot;
     }
     D[--bot] = p;
-    trace(HullStep::push, p, deque());
+    tell(trace, trace::Event::push, {p}, deque());
   }
   //< melkman
   return {D.begin() + static_cast<std::ptrdiff_t>(bot), D.begin() + static_cast<std::ptrdiff_t>(top)};

@@ -81,16 +81,20 @@ struct Renumbered {
   Tr& trace;
   std::span<const std::size_t> to;
   std::vector<std::size_t> chain;
-  void operator()(HullStep s, std::size_t i, std::span<const std::size_t> c) {
-    chain.resize(c.size());
-    if (!c.empty()) chain.back() = to[c.back()];
-    trace(s, to[i], chain);
+  void operator()(const trace::Report& r) {
+    chain.resize(r.chain.size());
+    if (!r.chain.empty()) chain.back() = to[r.chain.back()];
+    trace::Report out = r;
+    for (std::size_t& i : out.at)
+      if (i != trace::Report::none) i = to[i];
+    out.chain = chain;
+    trace(out);
   }
 };
 
 template <class Tr>
 auto renumbered(Tr& trace, std::span<const std::size_t> to) {
-  if constexpr (std::is_same_v<std::remove_const_t<Tr>, NoTrace>)
+  if constexpr (!trace::traced<Tr>)
     return NoTrace{};
   else
     return Renumbered<Tr>{trace, to, {}};
@@ -146,7 +150,7 @@ void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std
   while (s[j % m] <= 0) ++j;
   std::vector<std::size_t> kept;                          // h_j, ..., h_i, then q
   for (std::size_t k = j; k <= i + m; ++k) kept.push_back(H[k % m]);
-  trace(HullStep::bridge, q, kept);
+  tell(trace, trace::Event::bridge, {q}, kept);
   kept.push_back(q);
   H = std::move(kept);
   //< hull-insert
@@ -156,7 +160,8 @@ void insert_into_hull(std::span<const Point> P, std::vector<std::size_t>& H, std
 /// halves in the lexicographic chart, then their merge. The strict vertices, counter-clockwise;
 /// throws `NoHull` when the points lie in no open hemisphere. The trace hears the monotone
 /// chain of each half (the negative one on the antipodes, with input indices), each half's
-/// hull (`HullStep::half`, index 1 or 2, the strict vertices counter-clockwise) and the bridges.
+/// hull (`Event::positive_half`, `negative_half`, the strict vertices counter-clockwise as the
+/// chain) and the bridges.
 template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
   //> hull-merge
@@ -174,14 +179,14 @@ std::vector<std::size_t> merge_hull(std::span<const Point> P, Tr&& trace = {}) {
     }
   }
   std::vector<std::size_t> H = monotone_chain<K>(P, pos, lex_chart(), trace);  // CH(A₁)
-  trace(HullStep::half, 1, H);
+  tell(trace, trace::Event::positive_half, {}, H);
   std::vector<std::size_t> local(neg.size());
   std::iota(local.begin(), local.end(), std::size_t{0});
   std::vector<std::size_t> H2 =  // CH(¬A₂), traced with input indices
       monotone_chain<K>(flipped, local, lex_chart(), detail::renumbered(trace, neg));
   std::reverse(H2.begin(), H2.end());  // CH(A₂): antipodes, clockwise read backwards
   for (std::size_t& k : H2) k = neg[k];
-  trace(HullStep::half, 2, H2);
+  tell(trace, trace::Event::negative_half, {}, H2);
   if (H.empty()) return H2;
   for (std::size_t q : H2) insert_into_hull<K>(P, H, q, trace);  // the bridges
   //< hull-merge

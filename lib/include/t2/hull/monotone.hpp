@@ -29,18 +29,17 @@ struct Chain {
 // One chain of the monotone chain: pops the points that do not turn left, pushes s[j].
 template <class K, class Tr>
 void chain_step(Chain& h, std::size_t floor, std::size_t j, Tr& trace) {
-  constexpr bool traced = !std::is_same_v<std::remove_cvref_t<Tr>, NoTrace>;
   while (h.at.size() >= floor + 2 && K::orient(h.point(h.at.size() - 2), h.point(h.at.size() - 1), h.s[j].p) <= 0) {
-    if constexpr (traced) {
-      trace(HullStep::pop, h.idx.back(), h.idx);
+    if constexpr (trace::traced<Tr>) {
+      trace(trace::about(trace::Event::pop, {h.idx.back()}, h.idx));
       h.idx.pop_back();
     }
     h.at.pop_back();
   }
   h.at.push_back(j);
-  if constexpr (traced) {
+  if constexpr (trace::traced<Tr>) {
     h.idx.push_back(h.s[j].i);
-    trace(HullStep::push, h.s[j].i, h.idx);
+    trace(trace::about(trace::Event::push, {h.s[j].i}, h.idx));
   }
 }
 

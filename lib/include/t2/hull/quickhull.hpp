@@ -76,7 +76,7 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
       if (s < 0 || (s == 0 && order.farther(P[a], P[h], P[i]))) h = i;
     }
   }
-  trace(HullStep::vertex, h, out);
+  tell(trace, trace::Event::vertex, {h}, out);
   std::vector<std::size_t> S1, S2;
   for (std::size_t i : S) {
     if (K::orient(P[a], P[h], P[i]) < 0) S1.push_back(i);

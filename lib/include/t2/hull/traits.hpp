@@ -9,9 +9,11 @@
 /// or record calls, or faster ones, change nothing else. ("Kernel" is kept for the library's
 /// layer of predicates and for the kernel of a polygon.)
 ///
-/// **Trace.** An algorithm reports its steps to a trace `Tr`: `trace(step, index, hull)` with the
-/// step, the input index it concerns and the current chain or stack. `NoTrace` does nothing and
-/// is inlined away (bench/bench_hull.cpp measures that it costs nothing).
+/// **Trace.** An algorithm reports its steps to a hook `Tr` (t2/trace/hook.hpp, the protocol
+/// of every algorithm): a `trace::Report` with the event (consider, push, pop, vertex, bridge,
+/// the halves of the merge), the input index it concerns and the current chain or stack. The
+/// default `NoTrace` builds no report at all (bench/bench_hull.cpp measures that it costs
+/// nothing).
 ///
 /// **Chart.** A planar hull algorithm needs an order "left to right" and orientation tests.
 /// Orientation is Δ on the original points. For the order, a *chart* is a pair of points X∞,
@@ -35,6 +37,7 @@
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -44,22 +47,6 @@ struct HullTraits {
   static Sign orient(const Point& p, const Point& q, const Point& r) { return t2::orient(p, q, r); }
   /// p = q in T² (a positive multiple), exact.
   static bool equal(const Point& p, const Point& q) { return p == q; }
-};
-
-/// The steps a hull algorithm reports to its trace.
-enum class HullStep {
-  consider,  ///< the algorithm looks at point `index`
-  push,      ///< `index` joins the chain (stack, hull so far)
-  pop,       ///< `index` leaves the chain: it is not a hull vertex
-  vertex,    ///< `index` is a hull vertex (Jarvis, Quickhull)
-  bridge,    ///< the merge joins the hull so far to `index`
-  half,      ///< the merge has the hull of one half: `index` 1 (positive) or 2 (negative), as the chain
-};
-
-/// The trace that records nothing: the default, free.
-struct NoTrace {
-  /// Does nothing.
-  void operator()(HullStep, std::size_t, std::span<const std::size_t>) const noexcept {}
 };
 
 /// A chart point z₀ + εz₁ + ε²z₂ (terms past `count` unused; zero terms are left out).

@@ -1,14 +1,13 @@
 #pragma once
 /// @file hull_recorder.hpp
-/// @brief A trace for the hull algorithms (hull/traits.hpp) that records every step it is told
+/// @brief A hook (trace/hook.hpp) for the hull algorithms that records every step it is told
 /// of as a `Step`: explained in words, with the stack or hull so far, and what to highlight.
 ///
-/// The hull algorithms report `trace(step, index, chain)`; this recorder turns the report into
-/// a sentence that depends on the algorithm (a pop in Graham's scan is a right turn found, a
-/// `consider` in Jarvis's march is a candidate challenged). Jarvis does not report its current
-/// candidate, so the recorder follows it by the march's own rule (a point strictly right of
-/// u → q, or beyond q on its line, replaces q) and checks at every new vertex that the candidate
-/// it followed is the vertex the march chose (`consistent()`).
+/// The hull algorithms report events in input indices; this recorder turns each report into a
+/// sentence that depends on the algorithm (a pop in Graham's scan is a right turn found, a
+/// `consider` in Jarvis's march is a candidate challenged: the march tells the candidate before
+/// and after the point and the sign of Δ(u, candidate, point)). It narrates and computes
+/// nothing of the algorithm's state.
 ///
 /// Depths: push, pop, vertex and bridge are lecture steps; consider is a debugging step. In the
 /// merge, the monotone chains of the two halves are a sub-algorithm, one level deeper (as
@@ -26,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "t2/hull/traits.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/trace/recording.hpp"
 
 namespace t2::trace {
@@ -45,11 +44,11 @@ class HullRecorder {
   static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();  ///< no index
 
   /// @param algo the algorithm traced
-  /// @param P the input points (the recorder keeps a view: they must outlive it)
-  /// @param chart the chart the algorithm runs in (used to follow Jarvis's candidate)
+  /// @param P the input points (read once: for the merge, whether they all lie in one half)
   /// @param out where the steps go
-  HullRecorder(HullAlgo algo, std::span<const Point> P, const Chart& chart, Recording& out)
-      : algo_(algo), P_(P), chart_(chart), out_(out) {
+  HullRecorder(HullAlgo algo, std::span<const Point> P, Recording& out) : algo_(algo), out_(out) {
+    // The merge's chains are a lecture of their own when one half holds every point (the file
+    // comment); that is a property of the input, known before the first report.
     const auto positive = [](const Point& p) {  // merge.hpp's split, lexicographic
       return (p.w() != 0 ? sign_of(p.w()) : p.x() != 0 ? sign_of(p.x()) : sign_of(p.y())) > 0;
     };
@@ -57,17 +56,19 @@ class HullRecorder {
     else if (std::none_of(P.begin(), P.end(), positive)) only_ = 2;
   }
 
-  /// The trace call of hull/traits.hpp.
-  void operator()(HullStep step, std::size_t i, std::span<const std::size_t> chain) {
-    const std::vector<std::size_t> c(chain.begin(), chain.end());
+  /// The hook (trace/hook.hpp).
+  void operator()(const Report& r) {
+    const std::vector<std::size_t> c(r.chain.begin(), r.chain.end());
+    const Event step = r.event;
+    const std::size_t i = r.at[0];
     switch (algo_) {
-      case HullAlgo::jarvis: jarvis(step, i, c); break;
+      case HullAlgo::jarvis: jarvis(r, c); break;
       case HullAlgo::graham: graham(step, i, c, "stack", "", Depth::lecture); break;
       case HullAlgo::merge:
-        if (step == HullStep::bridge) {
+        if (step == Event::bridge) {
           bridge(i, c);
-        } else if (step == HullStep::half) {
-          half(i, c);
+        } else if (step == Event::positive_half || step == Event::negative_half) {
+          half(step == Event::positive_half ? 1 : 2, c);
         } else {
           graham(step, i, c, half_ == 1 ? "chain (positive half)" : "chain (negative half's antipodes)",
                  half_ == 1 ? "Monotone chain of the positive half: "
@@ -77,9 +78,6 @@ class HullRecorder {
         break;
     }
   }
-
-  /// False when Jarvis chose a vertex other than the candidate the recorder followed.
-  bool consistent() const { return consistent_; }
 
  private:
   void add(const char* kind, Depth d, std::string text, const char* structure, std::vector<std::size_t> chain,
@@ -97,10 +95,10 @@ class HullRecorder {
   }
 
   // Graham's scan, and the monotone chain inside the merge (the same pushes and pops).
-  void graham(HullStep step, std::size_t i, std::vector<std::size_t> c, const char* structure,
+  void graham(Event step, std::size_t i, std::vector<std::size_t> c, const char* structure,
               const std::string& prefix, Depth change = Depth::lecture) {
     const std::size_t n = c.size();
-    if (step == HullStep::consider) {
+    if (step == Event::consider) {
       current_ = i;
       if (n < 2) {
         add("consider", Depth::debugging,
@@ -112,14 +110,14 @@ class HullRecorder {
                 point_name(i) + " turn left (counter-clockwise)?",
             structure, c, {i}, {{c[n - 1], i}});
       }
-    } else if (step == HullStep::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
+    } else if (step == Event::pop && algo_ == HullAlgo::merge) {  // the monotone chain reports no consider
       c.pop_back();
       add("pop", change,
           prefix + point_name(i) + " is popped: the chain makes no left turn at " + point_name(i) +
               ", so it leaves the chain here (the lower and the upper chain are built apart: a point one drops may be "
               "a vertex of the other).",
           structure, c, {i});
-    } else if (step == HullStep::pop) {
+    } else if (step == Event::pop) {
       const std::size_t below = n >= 2 ? c[n - 2] : none;
       const std::size_t next = current_ != none ? current_ : c.front();  // closing: back to the pivot
       std::string why = below == none ? ""
@@ -130,18 +128,19 @@ class HullRecorder {
           prefix + point_name(i) + " is popped: " + why + point_name(i) + " is no hull vertex" +
               (current_ == none ? " (closing the chain back to the pivot " + point_name(next) + ")." : "."),
           structure, c, {i, next}, below == none ? std::vector<Edge>{} : std::vector<Edge>{{below, i}, {i, next}});
-    } else if (step == HullStep::push) {
+    } else if (step == Event::push) {
       current_ = none;
       add("push", change, prefix + point_name(i) + " is pushed: the " + structure + " turns left all along.", structure,
           c, {i});
     }
   }
 
-  void jarvis(HullStep step, std::size_t i, const std::vector<std::size_t>& c) {
-    if (step == HullStep::vertex) {
-      if (c.size() > 1 && cand_ != i) consistent_ = false;
+  // Jarvis: the march tells each vertex, and each point i considered with the candidate before
+  // it (none for the first), the candidate after it, and the sign of Δ(u, before, i).
+  void jarvis(const Report& r, const std::vector<std::size_t>& c) {
+    const std::size_t i = r.at[0];
+    if (r.event == Event::vertex) {
       u_ = i;
-      cand_ = none;
       add("vertex", Depth::lecture,
           c.size() == 1
               ? point_name(i) + ", the first point in the chart's order (leftmost, then lowest), is a hull vertex."
@@ -150,31 +149,23 @@ class HullRecorder {
           "hull so far", c, {i}, c.size() > 1 ? std::vector<Edge>{{c[c.size() - 2], i}} : std::vector<Edge>{});
       return;
     }
-    if (step != HullStep::consider) return;
+    if (r.event != Event::consider) return;
+    const std::size_t q = r.at[1], next = r.at[2];
     std::string text;
-    if (cand_ == none) {
-      cand_ = i;
+    if (q == Report::none) {
       text = point_name(i) + " is the first candidate for the vertex after " + point_name(u_) + ".";
+    } else if (next == i) {
+      text = r.sign < 0 ? point_name(i) + " lies right of " + point_name(u_) + " → " + point_name(q) +
+                              ": it replaces " + point_name(q) + " as the candidate."
+                        : point_name(i) + " lies on the line " + point_name(u_) + " " + point_name(q) + ", beyond " +
+                              point_name(q) + ": it becomes the candidate.";
     } else {
-      const std::size_t q = cand_;
-      const Sign s = HullTraits::orient(P_[u_], P_[q], P_[i]);
-      const ChartOrder<HullTraits> order{chart_};
-      if (s < 0) {
-        cand_ = i;
-        text = point_name(i) + " lies right of " + point_name(u_) + " → " + point_name(q) + ": it replaces " +
-               point_name(q) + " as the candidate.";
-      } else if (s == 0 && order.farther(P_[u_], P_[q], P_[i])) {
-        cand_ = i;
-        text = point_name(i) + " lies on the line " + point_name(u_) + " " + point_name(q) + ", beyond " +
-               point_name(q) + ": it becomes the candidate.";
-      } else {
-        text = point_name(i) +
-               (s == 0 ? " lies on the line " + point_name(u_) + " " + point_name(q) + ", not beyond " + point_name(q)
-                       : " lies left of " + point_name(u_) + " → " + point_name(q)) +
-               ": the candidate stays " + point_name(q) + ".";
-      }
+      text = point_name(i) +
+             (r.sign == 0 ? " lies on the line " + point_name(u_) + " " + point_name(q) + ", not beyond " + point_name(q)
+                          : " lies left of " + point_name(u_) + " → " + point_name(q)) +
+             ": the candidate stays " + point_name(q) + ".";
     }
-    add("consider", Depth::debugging, text, "hull so far", c, {i, cand_}, {{u_, cand_}});
+    add("consider", Depth::debugging, text, "hull so far", c, {i, next}, {{u_, next}});
   }
 
   // The merge: the hull of half k (1 positive, 2 negative) is done. When it holds every point
@@ -213,13 +204,9 @@ class HullRecorder {
   }
 
   HullAlgo algo_;
-  std::span<const Point> P_;
-  Chart chart_;
   Recording& out_;
   std::size_t current_ = none;  // Graham: the point being considered (none after its push)
   std::size_t u_ = none;        // Jarvis: the last vertex
-  std::size_t cand_ = none;     // Jarvis: the current candidate for the next vertex
-  bool consistent_ = true;
   std::size_t only_ = 0;               // merge: the half (1, 2) holding every point; 0: both
   std::size_t half_ = 1;               // merge: the half whose chain is running
   std::vector<std::size_t> positive_;  // merge: the positive half's hull

@@ -8,11 +8,19 @@
 /// insertion, a flip); the debugging level adds every test the algorithm makes (each point
 /// Graham or Jarvis considers, each in-circle test of Delaunay). A player shows the steps of
 /// depth at most the chosen level.
+///
+/// A step names input points by index. What the algorithm *constructs* — a circle of an
+/// in-circle test, a sweep line, a Voronoi vertex, an intersection point, a kd-tree split — is
+/// not an input point: it goes into the step's `overlay`, a `t2::Scene` (kernel/scene.hpp) of
+/// exact kernel objects (points, segments, polygons, lines, circles by centre and boundary
+/// point, each with its style and label), drawn over the step's picture.
 
 #include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "t2/kernel/scene.hpp"
 
 namespace t2::trace {
 
@@ -45,7 +53,8 @@ struct Step {
   std::vector<std::size_t> points;  ///< points in focus; the first is the current point
   std::vector<Edge> edges;          ///< edges in focus (a candidate edge, a bridge, a new edge)
   std::vector<Tri> touched;         ///< triangles in focus (the two triangles of a flip)
-  std::vector<std::size_t> circle;  ///< three points whose circle is tested (empty: none)
+  // What the algorithm constructed, drawn over the picture (the file comment).
+  Scene overlay;  ///< constructed geometry: circles, lines, points, segments (empty: none)
 };
 
 }  // namespace t2::trace

@@ -1,11 +1,12 @@
 #pragma once
 /// @file sweep_recorder.hpp
-/// @brief A trace for `triangulate` (triangulation/triangulate.hpp) that records the sweep of
-/// chapter 09 as `Step`s: `t2 animate sweep`.
+/// @brief A hook (trace/hook.hpp) for `triangulate` (triangulation/triangulate.hpp) that
+/// records the sweep of chapter 09 as `Step`s: `t2 animate sweep`.
 ///
-/// `triangulate` builds on the input's own indices (no reordering), so the hooks' vertex
-/// indices are input indices. The points are swept in (x, y) order; equal points are one vertex
-/// (the smallest index) and call no hook.
+/// `triangulate` builds on the input's own indices (no reordering) and reports which event each
+/// is: the first triangle, a point on its first edge, a swept point, a flip, the end. The points
+/// are swept in (x, y) order; equal points are one vertex (the smallest index) and are not
+/// reported.
 ///
 /// Depths (seed 003's levels, as the chapter teaches the sweep): at the lecture level one step
 /// per point — the first triangle, then each point with its new fan, the triangles it has made
@@ -14,61 +15,74 @@
 /// into a triangle. Every step holds every finite triangle so far and the hull so far (closed,
 /// counter-clockwise), so a player can jump to it.
 ///
-/// Call `finish()` after `triangulate` returns: the last point's fan is recorded then.
+/// The last point's fan is recorded when the sweep reports that it is done.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <map>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "t2/kernel/lexicographic.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/trace/recording.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::trace {
 
-/// A `triangulate` trace that records the steps of the sweep (see the file comment).
+/// A `triangulate` hook that records the steps of the sweep (see the file comment).
 class SweepRecorder {
  public:
   using Index = Triangulation::Index;  ///< the triangulation's indices
 
-  /// @param input the points that will be given to `triangulate` (a view is kept)
   /// @param out where the steps go
-  SweepRecorder(std::span<const Point> input, Recording& out) : input_(input), out_(&out) {}
-  /// Not copied: `triangulate` takes its trace by reference, and a copy would split the steps.
+  explicit SweepRecorder(Recording& out) : out_(&out) {}
+  /// Not copied: `triangulate` takes its hook by reference, and a copy would split the steps.
   SweepRecorder(const SweepRecorder&) = delete;
   /// Not copied (see the copy constructor).
   SweepRecorder& operator=(const SweepRecorder&) = delete;
 
-  /// Hook: vertex v has just joined (before its flips).
-  void inserted(const Triangulation& tr, Index v) {
-    finish();  // the fan of the point before
-    if (first_) {
-      first_ = false;
-      third_ = v;
-      Step st = state(tr, "start", Depth::lecture, "hull so far");
-      const Tri f = st.triangles.at(0);
-      st.touched = {f};
-      st.points = {v, f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]};
-      st.text = "The sweep takes the points in (x, y) order. The first triangle: " + point_name(f[0]) + ", " +
-                point_name(f[1]) + ", " + point_name(f[2]) + " (" + point_name(v) +
-                " is the first point off the line of the smallest two).";
-      out_->add(std::move(st));
-      return;
+  /// The hook.
+  void operator()(const Report& r) {
+    switch (r.event) {
+      case Event::start: return start(*r.tr, r.at);
+      case Event::on_edge: return on_edge(*r.tr, static_cast<Index>(r.at[0]));
+      case Event::insert: return insert(*r.tr, static_cast<Index>(r.at[0]));
+      case Event::flip: return flipped(*r.tr, r.faces[0], r.faces[1]);
+      case Event::done: return finish();
+      default: return;
     }
+  }
+
+ private:
+  void start(const Triangulation& tr, const std::array<std::size_t, 4>& at) {
+    Step st = state(tr, "start", Depth::lecture, "hull so far");
+    const Tri f = st.triangles.at(0);
+    st.touched = {f};
+    st.points = {at[0], at[1], at[2]};
+    st.text = "The sweep takes the points in (x, y) order. The first triangle: " + point_name(f[0]) + ", " +
+              point_name(f[1]) + ", " + point_name(f[2]) + " (the smallest two points and the first point off "
+              "their line).";
+    out_->add(std::move(st));
+  }
+
+  void on_edge(const Triangulation& tr, Index v) {
+    Step st = state(tr, "insert", Depth::lecture, "hull so far");
+    st.points = {v};
+    st.touched = fan(tr, v);
+    // a point on the first edge: joined to both triangles, no flip
+    st.text = point_name(v) +
+              " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
+              "on it, in two.";
+    out_->add(std::move(st));
+  }
+
+  void insert(const Triangulation& tr, Index v) {
+    finish();  // the fan of the point before
     Step st = state(tr, "insert", Depth::debugging, "hull so far");
     st.points = {v};
     st.touched = fan(tr, v);
-    if (t2::compare_xy(input_[v], input_[third_]) < 0) {
-      st.depth = Depth::lecture;  // a point on the first edge: joined to both triangles, no flip
-      st.text = point_name(v) +
-                " lies on the first edge, between the smallest two points: it splits the edge, and the triangle "
-                "on it, in two.";
-      out_->add(std::move(st));
-      return;
-    }
     const Tri& t = st.touched.at(0);
     st.edges = {{t[0] == v ? t[1] : t[0], t[2] == v ? t[1] : t[2]}};
     st.text = point_name(v) +
@@ -82,7 +96,7 @@ class SweepRecorder {
     pending_ = fan_step(tr, v);
   }
 
-  /// Hook: the edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
+  // The edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
   void flipped(const Triangulation& tr, Index t, Index u) {
     const Index v = tr.vertex(t, 0);
     Step st = state(tr, "flip", Depth::debugging, "hull so far");
@@ -102,8 +116,8 @@ class SweepRecorder {
     pending_ = fan_step(tr, v);
   }
 
-  /// Records the fan of the last swept point, if it is not recorded yet (called by the next
-  /// `inserted`, and once by the caller after `triangulate` returns).
+  // Records the fan of the last swept point, if it is not recorded yet (at the next insert,
+  // and at the end).
   void finish() {
     if (pending_.kind.empty()) return;
     const std::size_t n = pending_.touched.size();
@@ -114,7 +128,6 @@ class SweepRecorder {
     pending_ = Step();
   }
 
- private:
   static Tri tri(const Triangulation& tr, Index t) {
     Tri x{tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)};
     std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
@@ -156,10 +169,7 @@ class SweepRecorder {
     return st;
   }
 
-  std::span<const Point> input_;
   Recording* out_;
-  bool first_ = true;
-  Index third_ = 0;         // the first triangle's last vertex: the first edge's points are before it
   Step pending_;            // the fan of the last swept point, not recorded yet (kind "" when none)
   std::size_t flips_ = 0;   // the flips of that point
 };

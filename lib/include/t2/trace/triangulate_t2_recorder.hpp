@@ -1,10 +1,11 @@
 #pragma once
 /// @file triangulate_t2_recorder.hpp
-/// @brief A trace for Algorithm 9 on T² (triangulation/insert_t2.hpp) that records its steps as
-/// `Step`s: `t2 animate triangulate` on input with points behind or on Ω.
+/// @brief A hook (trace/hook.hpp) for Algorithm 9 on T² (triangulation/insert_t2.hpp) that
+/// records its steps as `Step`s: `t2 animate triangulate` on input with points behind or on Ω.
 ///
-/// The hooks see positions in the insertion order; the recorder turns them into input indices
-/// with the order `started` hands it. Depths (seed 003's levels): at the lecture level the first
+/// The algorithm reports input indices and lends its triangulation with the map from its
+/// vertices (positions in the insertion order) to input indices; the recorder reads the faces
+/// through that map. Depths (seed 003's levels): at the lecture level the first
 /// triangle and then one step per point — in a face, on an edge, merged with an equal vertex,
 /// outside the hull with its new fan, or taking the place of v∞ (the hull gone; with the
 /// antipodal edge z → ¬z when it is the antipode of a hull vertex); at the debugging level also a
@@ -15,13 +16,14 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "t2/trace/hook.hpp"
 #include "t2/trace/recording.hpp"
-#include "t2/triangulation/insert_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::trace {
@@ -38,57 +40,70 @@ class TriangulateT2Recorder {
   /// Not copied (see the copy constructor).
   TriangulateT2Recorder& operator=(const TriangulateT2Recorder&) = delete;
 
-  /// Hook: the first triangle; order[m] is the input index of position m.
-  void started(const Triangulation& tr, std::span<const Index> order) {
-    order_.assign(order.begin(), order.end());
-    Step st = state(tr, "start", Depth::lecture);
-    st.touched = st.triangles;
-    const Tri& f = st.touched.at(0);
-    st.points = {f[0], f[1], f[2]};
-    st.text =
-        "The points go in a spatial order on the sphere (or in input order). The first triangle: " + point_name(f[0]) +
-        ", " + point_name(f[1]) + ", " + point_name(f[2]) + ", with v∞ beyond each of its edges.";
-    out_->add(std::move(st));
+  /// The hook.
+  void operator()(const Report& r) {
+    order_ = r.input_of;  // valid while the report is
+    const Triangulation& tr = *r.tr;
+    const std::size_t v = r.at[0];
+    switch (r.event) {
+      case Event::start: {
+        Step st = state(tr, "start", Depth::lecture);
+        st.touched = st.triangles;
+        const Tri& f = st.touched.at(0);
+        st.points = {f[0], f[1], f[2]};
+        st.text = "The points go in a spatial order on the sphere (or in input order). The first triangle: " +
+                  point_name(f[0]) + ", " + point_name(f[1]) + ", " + point_name(f[2]) +
+                  ", with v∞ beyond each of its edges.";
+        out_->add(std::move(st));
+        return;
+      }
+      case Event::join: return joined(tr, v, r.faces[0]);
+      case Event::flip: return flipped(tr, v, r.faces[0], r.faces[1]);
+      case Event::replace: return replaced(tr, v, r.face_list);
+      case Event::in_face: case Event::on_edge: case Event::duplicate: case Event::outside:
+      case Event::cover: case Event::antipode: case Event::wait: return inserted(tr, r);
+      default: return;
+    }
   }
 
-  /// Hook: p is inserted, merged, or waits.
-  void inserted(const Triangulation& tr, Index p, T2Step how) {
+ private:
+  // p is inserted, merged, or waits.
+  void inserted(const Triangulation& tr, const Report& r) {
     Step st = state(tr, "insert", Depth::lecture);
-    const std::size_t v = order_[p];
+    const std::size_t v = r.at[0];
     st.points = {v};
-    st.touched = fan(tr, p);
-    switch (how) {
-      case T2Step::face:
+    st.touched = fan(tr, v);
+    switch (r.event) {
+      case Event::in_face:
         st.text = point_name(v) + " lies inside a face: it splits it in three.";
         break;
-      case T2Step::edge:
+      case Event::on_edge:
         st.text = point_name(v) + " lies inside an edge: the two faces on it split into four.";
         break;
-      case T2Step::duplicate: {
+      case Event::duplicate:
         st.kind = "merge";
-        const auto [d, k] = tr.duplicates().back();
-        st.points = {order_[d], order_[k]};
-        st.text = point_name(order_[d]) + " equals " + point_name(order_[k]) + ": one vertex, " +
-                  point_name(order_[k]) + " (the smaller index).";
+        st.points = {r.at[0], r.at[1]};
+        st.touched.clear();
+        st.text = point_name(r.at[0]) + " equals " + point_name(r.at[1]) + ": one vertex, " + point_name(r.at[1]) +
+                  " (the smaller index).";
         break;
-      }
-      case T2Step::outside:
+      case Event::outside:
         st.text = point_name(v) +
                   " lies outside the hull and its antipode too, so the hull survives: joined to every hull edge it "
                   "sees, " +
                   std::to_string(st.touched.size()) + " new triangle" + (st.touched.size() == 1 ? "" : "s") + ".";
         break;
-      case T2Step::cover:
+      case Event::cover:
         st.text = point_name(v) +
                   " sees every hull edge: its antipode lies inside the hull. It takes the place of v∞ in every "
                   "infinite face; the faces now cover the sphere and the hull is gone.";
         break;
-      case T2Step::antipode:
+      case Event::antipode:
         st.text = point_name(v) +
                   " is the antipode of a hull vertex: it takes the place of v∞, and the two faces at the antipodal "
                   "edge are lunes, the edge along the bisector of the hull angle (seed 000, figure 5.18).";
         break;
-      case T2Step::waits:
+      default:  // wait
         st.kind = "wait";
         st.depth = Depth::debugging;
         st.touched.clear();
@@ -100,46 +115,44 @@ class TriangulateT2Recorder {
     out_->add(std::move(st));
   }
 
-  /// Hook: p, outside the hull, is put into the infinite face of a hull edge; t is its finite face.
-  void joined(const Triangulation& tr, Index p, Index t) {
+  // v, outside the hull, is put into the infinite face of a hull edge; t is its finite face.
+  void joined(const Triangulation& tr, std::size_t v, Index t) {
     Step st = state(tr, "join", Depth::debugging);
-    st.points = {order_[p]};
+    st.points = {v};
     st.touched = {tri(tr, t)};
     const Tri& f = st.touched[0];
-    st.edges = {{f[0] == order_[p] ? f[1] : f[0], f[2] == order_[p] ? f[1] : f[2]}};
-    st.text = point_name(order_[p]) + " lies outside the hull and sees the hull edge " + point_name(st.edges[0][0]) +
-              " " + point_name(st.edges[0][1]) +
+    st.edges = {{f[0] == v ? f[1] : f[0], f[2] == v ? f[1] : f[2]}};
+    st.text = point_name(v) + " lies outside the hull and sees the hull edge " + point_name(st.edges[0][0]) + " " +
+              point_name(st.edges[0][1]) +
               ": joined to it. Next, step 35: the hull edges next to it that it also sees.";
     out_->add(std::move(st));
   }
 
-  /// Hook: a flip of step 35; t and u are the new triangles.
-  void flipped(const Triangulation& tr, Index t, Index u) {
+  // A flip of step 35 at v; t and u are the new triangles.
+  void flipped(const Triangulation& tr, std::size_t v, Index t, Index u) {
     Step st = state(tr, "flip", Depth::debugging);
-    const Index v = tr.vertex(t, 0);
-    st.points = {order_[v]};
+    st.points = {v};
     for (Index x : {t, u})
       if (!tr.is_infinite(x)) st.touched.push_back(tri(tr, x));
-    st.text = point_name(order_[v]) + " also sees the next hull edge: step 35 flips it into a triangle at " +
-              point_name(order_[v]) + ", and the reflex angle there is gone.";
+    st.text = point_name(v) + " also sees the next hull edge: step 35 flips it into a triangle at " +
+              point_name(v) + ", and the reflex angle there is gone.";
     out_->add(std::move(st));
   }
 
-  /// Hook: p has taken v∞'s place in `faces`: one debugging step per face.
-  void replaced(const Triangulation& tr, Index p, std::span<const Index> faces) {
+  // v has taken v∞'s place in `faces`: one debugging step per face.
+  void replaced(const Triangulation& tr, std::size_t v, std::span<const Index> faces) {
     std::size_t k = 0;
     for (Index t : faces) {
       Step st = state(tr, "replace", Depth::debugging);
-      st.points = {order_[p]};
+      st.points = {v};
       st.touched = {tri(tr, t)};
       ++k;
-      st.text = "Face " + std::to_string(k) + " of " + std::to_string(faces.size()) + ": " + point_name(order_[p]) +
+      st.text = "Face " + std::to_string(k) + " of " + std::to_string(faces.size()) + ": " + point_name(v) +
                 " takes the place of v∞ in the infinite face of a hull edge, which becomes a finite face.";
       out_->add(std::move(st));
     }
   }
 
- private:
   // A face as input indices, rotated so that its smallest index comes first.
   Tri tri(const Triangulation& tr, Index t) const {
     Tri x{order_[tr.vertex(t, 0)], order_[tr.vertex(t, 1)], order_[tr.vertex(t, 2)]};
@@ -147,11 +160,14 @@ class TriangulateT2Recorder {
     return x;
   }
 
-  // The finite faces at position v, sorted.
-  std::vector<Tri> fan(const Triangulation& tr, Index v) const {
+  // The finite faces at input point v, sorted.
+  std::vector<Tri> fan(const Triangulation& tr, std::size_t v) const {
     std::vector<Tri> out;
     for (Index t = 0; t < tr.size(); ++t)
-      if (!tr.is_infinite(t) && tr.slot(t, v) >= 0) out.push_back(tri(tr, t));
+      if (!tr.is_infinite(t)) {
+        const Tri f = tri(tr, t);
+        if (f[0] == v || f[1] == v || f[2] == v) out.push_back(f);
+      }
     std::sort(out.begin(), out.end());
     return out;
   }
@@ -175,7 +191,7 @@ class TriangulateT2Recorder {
   }
 
   Recording* out_;
-  std::vector<std::size_t> order_;  // position -> input index
+  std::span<const std::uint32_t> order_;  // vertex -> input index, of the report being heard
 };
 
 }  // namespace t2::trace

@@ -64,11 +64,15 @@
 /// `t2 bench delaunay --n 1000000 --vs owned,cgal` measures both (the peak resident memory of
 /// the process, which adds about 4 MB of code and libraries to these counts).
 ///
-/// **Traits.** `delaunay_with<K>` takes the predicates from a traits type K (orient, in_circle,
-/// compare_xy on `t2::Point`) and calls its trace hooks (inserted, flipped); the default
-/// `DelaunayTraits` calls the exact `t2::orient`, `t2::in_circle` and `t2::compare_xy` and
-/// traces nothing, at no cost. Faster traits or an animation trace drop in without touching
-/// the algorithm.
+/// **Traits and trace.** `delaunay_with<K>` takes the predicates from a traits type K (orient,
+/// in_circle, compare_xy on `t2::Point`); the default `DelaunayTraits` calls the exact
+/// `t2::orient`, `t2::in_circle` and `t2::compare_xy`. Its steps go to a hook (t2/trace/hook.hpp)
+/// in input indices: the first triangle (`start`), each point inserted before its flips
+/// (`insert`), each in-circle test of a finite triangle with its perturbed answer (`in_circle`,
+/// `tie` when the exact sign was zero), each flip (`flip`, the two new triangles), each merged
+/// duplicate (`duplicate`) and the end (`done`); the reports lend the triangulation and its
+/// insertion order. The default `NoTrace` costs nothing (bench/bench_delaunay.cpp). Front input
+/// only: the T² assembly of delaunay_t2.hpp is not traced.
 
 #include <algorithm>
 #include <cstdint>
@@ -81,6 +85,7 @@
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
@@ -103,10 +108,6 @@ struct DelaunayTraits {
     }
     return t2::compare_xy(p, q);
   }
-  /// Trace hook: point `v` has just been inserted (before its flips).
-  void inserted(const Triangulation&, Triangulation::Index) {}
-  /// Trace hook: the edge opposite vertex 0 of t has just been flipped (t and u are the new triangles).
-  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
 };
 
 //> perturbed-in-circle
@@ -185,9 +186,9 @@ inline std::vector<Point> in_order(std::span<const Point> input, const std::vect
 /// insertion `order` (vertex m is the m-th inserted point); at the end the input indices are
 /// restored by `renumber`: from a copy of `input`, or in place when `input` is null (the
 /// construction owns the points).
-template <class K>
+template <class K, class Tr = NoTrace>
 Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t> order,
-                          const std::span<const Point>* input) {
+                          const std::span<const Point>* input, Tr&& trace = {}) {
   using Index = Triangulation::Index;
   const auto& pts = tr.points();
   const Index n = static_cast<Index>(order.size());
@@ -213,6 +214,8 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
     tr.make_triangle(0, ib, ic, n);
   else
     tr.make_triangle(ib, 0, ic, n);
+  using trace::Event;
+  tell(trace, [&] { return trace::about(Event::start, tr, order, {order[tr.vertex(0, 0)], order[tr.vertex(0, 1)], order[tr.vertex(0, 2)]}); });
   // Then the points skipped above (equal to the first or on the first line), then the rest.
   auto next_point = [&, m = Index(1)]() mutable {
     while (m == ib || m == ic) ++m;
@@ -235,6 +238,7 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
       const Index v = tr.vertex(loc.t, loc.i);
       if (order[p] < order[v]) tr.rename_vertex(loc.t, v, p);
       tr.add_duplicate(order[p] < order[v] ? v : p, order[p] < order[v] ? p : v);
+      tell(trace, [&] { return trace::about(Event::duplicate, tr, order, {std::max(order[p], order[v]), std::min(order[p], order[v])}); });
       continue;
     }
     const Index first_new = static_cast<Index>(tr.size());
@@ -246,21 +250,32 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
       tr.insert_on_edge(loc.t, loc.i, p);
       stack = {3 * loc.t, 3 * u, 3 * first_new, 3 * (first_new + 1)};
     }
-    kernel.inserted(tr, p);
+    tell(trace, [&] { return trace::about(Event::insert, tr, order, {order[p]}); });
     last = loc.t;
     // Lawson: every edge opposite p, p is vertex 0 of its triangle
     while (!stack.empty()) {
       const Index t = stack.back() / 3;
       stack.pop_back();
       const Index u = tr.neighbor(t, 0);
-      if (!detail::in_conflict(kernel, tr, u, pts[p])) continue;
+      const bool conflict = detail::in_conflict(kernel, tr, u, pts[p]);
+      if constexpr (trace::traced<Tr>) {  // a finite triangle's circle: what it was asked, what it said
+        if (!tr.is_infinite(u)) {
+          trace::Report r = trace::about(Event::in_circle, tr, order,
+                                         {order[tr.vertex(u, 0)], order[tr.vertex(u, 1)], order[tr.vertex(u, 2)], order[p]});
+          r.sign = conflict ? POSITIVE : NEGATIVE;
+          r.tie = kernel.in_circle(tr.point(tr.vertex(u, 0)), tr.point(tr.vertex(u, 1)), tr.point(tr.vertex(u, 2)), pts[p]) == ZERO;
+          trace(r);
+        }
+      }
+      if (!conflict) continue;
       tr.flip(t, 0);
-      kernel.flipped(tr, t, u);
+      tell(trace, [&] { return trace::about(Event::flip, tr, order, {order[p]}, {t, u}); });
       stack.push_back(3 * t);
       stack.push_back(3 * u);
     }
   }
   //< delaunay-loop
+  tell(trace, [&] { return trace::about(Event::done, tr, order, {}); });
   restore(std::move(order));
   tr.finish();
   return tr;
@@ -271,10 +286,10 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
 //> delaunay
 /// The Delaunay triangulation of points of T² with the predicates of traits K; see the file
 /// comment for the algorithm and the rule on degenerate input, delaunay_t2.hpp for input that is
-/// not all in front. Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
+/// not all in front (which `trace` does not hear). Throws `Undefined` for points on Ω around an empty side (delaunay_t2.hpp),
 /// `BadInput` for more than 715 827 882 points (32-bit half-edge indices).
-template <class K = DelaunayTraits>
-Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
+template <class K = DelaunayTraits, class Tr = NoTrace>
+Triangulation delaunay_with(std::span<const Point> input, K kernel = {}, Tr&& trace = {}) {
   if (std::any_of(input.begin(), input.end(), [](const Point& p) { return p.w() <= 0; }))
     return detail::delaunay_t2(input, kernel);
   if (input.size() > Triangulation::none / 6)  // half-edges 3t + i of 2n triangles fit 32 bits
@@ -284,7 +299,7 @@ Triangulation delaunay_with(std::span<const Point> input, K kernel = {}) {
   // the input indices and points at the end.
   std::vector<std::uint32_t> order = spatial_order(input);
   std::vector<Point> sorted = detail::in_order(input, order);
-  return detail::incremental(kernel, Triangulation(std::move(sorted)), std::move(order), &input);
+  return detail::incremental(kernel, Triangulation(std::move(sorted)), std::move(order), &input, trace);
 }
 
 /// The same on a vector of points that the result takes over: `points()` of the result holds

@@ -3,19 +3,21 @@
 /// @brief The incremental insertion of Algorithm 9 on T² (seed 000, §5.3), with a trace:
 /// triangulate_t2.hpp has the cases, the order, the proofs and the untraced entry point.
 ///
-/// **Trace.** `triangulate_t2(input, how, trace)` reports every step to `trace`. The vertex
-/// indices the hooks see are positions in the insertion order: `started(tr, order)` is called
-/// once, when the first triangle is made, with order[m] the input index of position m; then,
-/// for every later point p, `inserted(tr, p, how)` once its insertion is complete (or once it
-/// has to wait: `T2Step::waits`; it is inserted later and reported again). Before that, a point
-/// outside the hull calls `joined(tr, p, t)` when it is put into the infinite face of a hull edge
-/// it sees (t: its finite face) and `flipped(tr, t, u)` after each flip of step 35 (as
-/// `triangulate.hpp`'s sweep does); a point that destroys the hull calls `replaced(tr, p, faces)`
-/// once v∞ is gone, with the faces where p took v∞'s place, in order around it. `NoT2Trace`
-/// does nothing and is inlined away (bench/bench_triangulate_t2.cpp measures it);
+/// **Trace.** `triangulate_t2(input, how, trace)` reports every step to the hook `trace`
+/// (t2/trace/hook.hpp), in input indices; each report lends the triangulation, whose vertex m is
+/// input point order[m]. `start` when the first triangle is made; then, for every later point,
+/// once its insertion is complete, `in_face`, `on_edge`, `duplicate`, `outside`, `cover` or
+/// `antipode` (or `wait` when it has to wait; it is inserted later and reported again). Before
+/// that, a point outside the hull reports `join` when it is put into the infinite face of a hull
+/// edge it sees (faces[0]: its finite face) and `flip` after each flip of step 35 (as
+/// `triangulate.hpp`'s sweep does); a point that destroys the hull reports `replace` once v∞ is
+/// gone, with the faces where it took v∞'s place, in order around it (`face_list`). At the end,
+/// `done`. `NoTrace` builds no report (bench/bench_triangulate_t2.cpp measures it);
 /// t2/trace/triangulate_t2_recorder.hpp records the steps for `t2 animate triangulate`.
 
 #include <algorithm>
+#include <array>
+#include <initializer_list>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -34,31 +36,6 @@
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
-
-/// What became of a point of Algorithm 9 on T² (the `how` of a trace's `inserted`).
-enum class T2Step {
-  face,       ///< inside a face: split in three
-  edge,       ///< inside an edge: its two faces split in four
-  duplicate,  ///< equal to a vertex: merged
-  outside,    ///< outside the hull, which survives: joined to the hull edges it sees (step 35)
-  cover,      ///< its antipode strictly inside the hull: it takes v∞'s place, the hull is gone
-  antipode,   ///< the antipode of a hull vertex z: the same, with the edge z → ¬z (step 31)
-  waits       ///< its antipode inside a hull edge: inserted once the hull is gone
-};
-
-/// The trace that records nothing: the default of the untraced `triangulate_t2` (file comment).
-struct NoT2Trace {
-  /// Hook: the first triangle is made; order[m] is the input index of position m.
-  void started(const Triangulation&, std::span<const Triangulation::Index>) {}
-  /// Hook: point p (a position) is inserted, merged or waits.
-  void inserted(const Triangulation&, Triangulation::Index, T2Step) {}
-  /// Hook: p, outside the hull, is put into the infinite face of a hull edge; t is its finite face.
-  void joined(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
-  /// Hook: a flip of step 35; t and u are the new triangles (`Triangulation::flip`).
-  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
-  /// Hook: p has taken v∞'s place in `faces`.
-  void replaced(const Triangulation&, Triangulation::Index, std::span<const Triangulation::Index>) {}
-};
 
 namespace detail {
 
@@ -185,7 +162,7 @@ class T2Builder {
       const Index v = tr_.vertex(w.t, w.i);
       if (order_[p] > order_[v]) {
         tr_.add_duplicate(p, v);
-        trace_.inserted(tr_, p, T2Step::duplicate);
+        report(trace::Event::duplicate, {order_[p], order_[v]});
         return true;
       }
       tr_.rename_vertex(w.t, v, p);
@@ -193,7 +170,7 @@ class T2Builder {
         for (Index* x : {&e.z, &e.nz, &e.u, &e.w})
           if (*x == v) *x = p;
       tr_.add_duplicate(v, p);
-      trace_.inserted(tr_, p, T2Step::duplicate);
+      report(trace::Event::duplicate, {order_[v], order_[p]});
       return true;
     }
     if (w.kind == Where::face) {
@@ -202,7 +179,7 @@ class T2Builder {
       tr_.insert_on_edge(w.t, w.i, p);  // an infinite neighbour stays infinite: inf_ holds
     }
     last_ = w.t;
-    trace_.inserted(tr_, p, w.kind == Where::face ? T2Step::face : T2Step::edge);
+    report(w.kind == Where::face ? trace::Event::in_face : trace::Event::on_edge, {order_[p]});
     return true;
   }
 
@@ -234,12 +211,12 @@ class T2Builder {
       const Index n = static_cast<Index>(tr_.size());
       for (Index f : {seen, n - 2, n - 1})
         if (!tr_.is_infinite(f)) last_ = f;  // (p, b, a): finite for good, flips keep it
-      trace_.joined(tr_, p, last_);
+      report(trace::Event::join, {order_[p]}, {last_, 0});
       for (Index f : {seen, n - 2, n - 1}) {
-        if (tr_.vertex(f, 2) == kInf) inf_ = flip_hull_chain(tr_, f, trace_);
-        if (tr_.vertex(f, 1) == kInf) inf_ = flip_hull_chain(tr_, f, trace_);
+        if (tr_.vertex(f, 2) == kInf) inf_ = flip_hull_chain(tr_, f, trace_, order_);
+        if (tr_.vertex(f, 1) == kInf) inf_ = flip_hull_chain(tr_, f, trace_, order_);
       }
-      trace_.inserted(tr_, p, T2Step::outside);
+      report(trace::Event::outside, {order_[p]});
       return true;
     }
     // ¬p is in the closed hull: the hull is destroyed. Where is ¬p?
@@ -252,7 +229,7 @@ class T2Builder {
     if (!zero.empty() && before.first == kNone) {  // ¬p inside a hull edge: wait
       for (auto [a, b] : zero)
         if (inside_arc(P(a), P(b), np)) blocking_ = {a, b};
-      trace_.inserted(tr_, p, T2Step::waits);
+      report(trace::Event::wait, {order_[p]});
       return false;
     }
     tr_.rename_vertex(inf_, kInf, p);  // p replaces v∞ everywhere
@@ -260,11 +237,20 @@ class T2Builder {
     if (before.first != kNone)  // step 31: the antipode of the hull vertex z
       lunes_.push_back({before.second, p, before.first, after.second});
     hull_ = false;
-    trace_.replaced(tr_, p, around);
-    trace_.inserted(tr_, p, before.first != kNone ? T2Step::antipode : T2Step::cover);
+    if constexpr (trace::traced<Trace>) {
+      trace::Report r = trace::about(trace::Event::replace, tr_, order_, {order_[p]});
+      r.face_list = around;
+      trace_(r);
+    }
+    report(before.first != kNone ? trace::Event::antipode : trace::Event::cover, {order_[p]});
     return true;
   }
   //< t2-outside
+
+  // Tells the hook about the points `at` (input indices) and the faces of tr.
+  void report(trace::Event e, std::initializer_list<std::size_t> at, std::array<Index, 2> faces = {0, 0}) {
+    if constexpr (trace::traced<Trace>) trace_(trace::about(e, tr_, order_, at, faces));
+  }
 
   Triangulation& tr_;
   std::vector<AntipodalEdge>& lunes_;
@@ -314,7 +300,7 @@ TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how,
   }
   if (orient(P[0], P[b], P[c]) > 0) tr.make_triangle(0, b, c, n);
   else tr.make_triangle(b, 0, c, n);
-  trace.started(tr, order);
+  tell(trace, [&] { return trace::about(trace::Event::start, tr, order, {order[tr.vertex(0, 0)], order[tr.vertex(0, 1)], order[tr.vertex(0, 2)]}); });
   detail::T2Builder<std::remove_reference_t<Trace>> builder(tr, out.lunes, order, trace);
   std::vector<Index> waiting;  // points whose antipode lies inside a hull edge
   for (Index p = 1; p < n; ++p) {
@@ -342,6 +328,7 @@ TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how,
     const auto [e0, e1] = builder.blocking_edge();
     detail::undefined_t2(input, order[still.front()], order[e0], order[e1]);
   }
+  tell(trace, [&] { return trace::about(trace::Event::done, tr, order, {}); });
   for (AntipodalEdge& e : out.lunes)
     for (Index* x : {&e.z, &e.nz, &e.u, &e.w}) *x = order[*x];
   tr.renumber(std::move(order), input);

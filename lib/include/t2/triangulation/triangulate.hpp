@@ -24,12 +24,13 @@
 /// Front points only (w > 0) take the sweep; input with a point on the back side or on Ω goes
 /// to the incremental construction of triangulate_t2.hpp (seed 000, Algorithm 9 on T²).
 ///
-/// **Trace.** `triangulate(input, trace)` calls `trace.inserted(tr, v)` when vertex v (an input
-/// index) joins: the third vertex of the first triangle, a point on its first edge, or a swept
-/// point before its flips; and `trace.flipped(tr, t, u)` after each flip of step 35 (t and u the
-/// new triangles, as `Triangulation::flip` leaves them). The default `NoSweepTrace` does nothing
-/// and is inlined away; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`.
-/// T² input is not traced (it takes no sweep).
+/// **Trace.** `triangulate(input, trace)` reports to the hook `trace` (t2/trace/hook.hpp), in
+/// input indices (the sweep builds on the input's own indices): `start` with the first triangle,
+/// `on_edge` for each point inside its first edge, `insert` for each swept point before its
+/// flips (faces[0]: the triangle it went into), `flip` after each flip of step 35 (faces: the new
+/// triangles, as `Triangulation::flip` leaves them), and `done`. The default `NoTrace` builds no
+/// report; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`. T² input takes
+/// no sweep: its steps are those of `triangulate_t2` (insert_t2.hpp), told to the same hook.
 
 #include <algorithm>
 #include <cstdint>
@@ -43,18 +44,15 @@
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
 
-/// The trace that records nothing: the default of `triangulate`, free (file comment).
-struct NoSweepTrace {
-  /// Hook: vertex v has just joined the triangulation (before its flips).
-  void inserted(const Triangulation&, Triangulation::Index) {}
-  /// Hook: the edge opposite vertex 0 of t has just been flipped; t and u are the new triangles.
-  void flipped(const Triangulation&, Triangulation::Index, Triangulation::Index) {}
-};
+/// Algorithm 9 on T² with a hook (insert_t2.hpp, included at the end).
+template <class Trace>
+TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how, Trace&& trace);
 
 namespace detail {
 
@@ -69,10 +67,11 @@ inline bool sees_hull_edge(const Triangulation& tr, Triangulation::Index f, cons
 /// Removes the reflex angles at the new hull vertex p (seed 000, Algorithm 9, step 35): t
 /// is an infinite triangle with p at slot 0; while p sees strictly the hull edge of the
 /// infinite triangle u across the edge opposite p, flip that edge (u's hull edge becomes
-/// a finite triangle with p). Returns the infinite triangle at p where the chain stops.
-template <class Trace = NoSweepTrace>
+/// a finite triangle with p). Returns the infinite triangle at p where the chain stops. Each
+/// flip is told to `trace`; vertex v of tr is input point input_of[v] (empty: v).
+template <class Trace = NoTrace>
 Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t,
-                                     Trace&& trace = {}) {
+                                     Trace&& trace = {}, std::span<const std::uint32_t> input_of = {}) {
   // t = (p, a, v∞), else (p, v∞, b)
   const bool backward = tr.vertex(t, 2) == Triangulation::infinite;
   for (;;) {
@@ -80,7 +79,7 @@ Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t,
     if (!sees_hull_edge(tr, u, tr.point(tr.vertex(t, 0)))) return t;
     // (p, a, v∞) + (a, x, v∞) -> (p, a, x) + (p, x, v∞), and the mirror image
     tr.flip(t, 0);
-    trace.flipped(tr, t, u);
+    tell(trace, [&] { return trace::about(trace::Event::flip, tr, input_of, {input_of.empty() ? tr.vertex(t, 0) : input_of[tr.vertex(t, 0)]}, {t, u}); });
     if (backward) t = u;
   }
 }
@@ -128,11 +127,16 @@ inline std::vector<Triangulation::Index> sorted_distinct(std::span<const Point> 
 /// `Undefined` cases apply). Every point is a vertex or a reported duplicate; the proper
 /// triangles are counter-clockwise. Throws `BadInput` for more than 715 827 882 points.
 /// `trace` sees the steps of the sweep (file comment).
-template <class Trace = NoSweepTrace>
+template <class Trace = NoTrace>
 Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
   using Index = Triangulation::Index;
-  if (!std::all_of(input.begin(), input.end(), [](const Point& p) { return p.w() > 0; }))
-    return triangulate_t2(input).tr;
+  using trace::Event;
+  if (!std::all_of(input.begin(), input.end(), [](const Point& p) { return p.w() > 0; })) {
+    if constexpr (trace::traced<Trace>)
+      return triangulate_t2(input, InsertionOrder::spatial, trace).tr;
+    else
+      return triangulate_t2(input).tr;
+  }
   if (input.size() > Triangulation::none / 6)
     throw BadInput("triangulate: more than " + std::to_string(Triangulation::none / 6) + " points");
   Triangulation tr(std::vector<Point>(input.begin(), input.end()));
@@ -150,12 +154,12 @@ Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
   const Index a = u[0], b = u[c - 1], q = u[c];
   const bool ccw = orient(input[a], input[b], input[q]) > 0;
   if (ccw) tr.make_triangle(a, b, q, u.size()); else tr.make_triangle(b, a, q, u.size());
-  trace.inserted(tr, q);
+  tell(trace, [&] { return trace::about(Event::start, tr, {}, {tr.vertex(0, 0), tr.vertex(0, 1), tr.vertex(0, 2)}); });
   // the edge is opposite slot 2 of t0, then of the newest triangle
   for (std::size_t k = 1; k + 1 < c; ++k) {
     const Index t = k == 1 ? 0 : static_cast<Index>(tr.size() - 1);
     tr.insert_on_edge(t, 2, u[ccw ? k : c - k - 1]);
-    trace.inserted(tr, u[ccw ? k : c - k - 1]);
+    tell(trace, [&] { return trace::about(Event::on_edge, tr, {}, {u[ccw ? k : c - k - 1]}); });
   }
   // The sweep: each point sees a hull edge at the previous one, m, whose infinite
   // triangles are (m, x, v∞) and (m, v∞, y) (t1 and t2 of make_triangle for m = q).
@@ -166,7 +170,7 @@ Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
     if (!detail::sees_hull_edge(tr, hit, input[p]))
       throw std::logic_error("triangulate: no hull edge seen");
     tr.insert_in_face(hit, p);  // p is vertex 0 of hit and of the last two triangles
-    trace.inserted(tr, p);
+    tell(trace, [&] { return trace::about(Event::insert, tr, {}, {p}, {hit, 0}); });
     const Index n = static_cast<Index>(tr.size());
     for (Index f : {hit, n - 2, n - 1}) {
       if (tr.vertex(f, 2) == Triangulation::infinite)
@@ -176,6 +180,7 @@ Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
     }
   }
   //< triangulate
+  tell(trace, [&] { return trace::about(Event::done, tr, {}, {}); });
   tr.finish();
   return tr;
 }
@@ -184,3 +189,5 @@ Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
 inline Triangulation triangulate(const std::vector<Point>& points) { return triangulate(std::span<const Point>(points)); }
 
 }  // namespace t2
+
+#include "t2/triangulation/insert_t2.hpp"  // IWYU pragma: export

@@ -1,0 +1,144 @@
+#pragma once
+/// @file hook.hpp
+/// @brief The one protocol by which every algorithm of the library tells a trace what it does:
+/// a `Report` per event, in the algorithm's *input indices*.
+///
+/// An algorithm that can be traced takes a hook `tr` (a `Hook`: anything callable with a
+/// `const Report&`) and calls it at each event: "I consider p7", "p7 is pushed", "the edge
+/// opposite p12 flips", "p29 lies inside the circle of p38, p16, p12". A report names the points
+/// it concerns by their index in the algorithm's input, never by the algorithm's private
+/// numbering: an algorithm that reorders its points (the spatial order of Delaunay, the
+/// insertion order of Algorithm 9 on T²) maps them back before it reports. For the state that is
+/// too large to copy at each event (a triangulation), the report lends a view of it and the map
+/// from its vertices to input indices, so that a recorder reads the state the algorithm has and
+/// never rebuilds it.
+///
+/// **Cost.** The default hook is `NoTrace`. Algorithms build a report only under
+/// `if constexpr (traced<Tr>)` (or through `tell`, which does that), so the untraced
+/// instantiation contains no trace code at all: bench/bench_hull.cpp and bench_delaunay.cpp
+/// time both.
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <type_traits>
+
+#include "t2/kernel/sign.hpp"
+
+namespace t2 {
+
+class Triangulation;
+
+namespace trace {
+
+/// What happened. Hull algorithms report the first seven, triangulations the rest.
+enum class Event {
+  consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
+  push,           ///< at[0] joins the chain (stack, hull so far)
+  pop,            ///< at[0] leaves the chain: it is not a hull vertex
+  vertex,         ///< at[0] is a hull vertex (Jarvis, Quickhull)
+  bridge,         ///< the merge joins the hull so far to at[0]
+  positive_half,  ///< the merge has the hull of the positive half, as the chain
+  negative_half,  ///< the merge has the hull of the negative half, as the chain
+  start,          ///< the first triangle: at[0..2], counter-clockwise
+  insert,         ///< at[0] has joined the triangulation, before its flips (Delaunay, the sweep)
+  in_face,        ///< at[0] lies inside a face and splits it in three (Algorithm 9 on T²)
+  on_edge,        ///< at[0] lies inside an edge: its two faces split in four (Algorithm 9 on T²)
+  duplicate,      ///< at[0] equals the vertex at[1]: one vertex, at[1]
+  outside,        ///< at[0] lies outside the hull and is joined to the hull edges it sees
+  cover,          ///< at[0] sees every hull edge: it takes v∞'s place and the hull is gone
+  antipode,       ///< at[0] is the antipode of a hull vertex: it takes v∞'s place (step 31)
+  wait,           ///< at[0]'s antipode lies inside a hull edge: it is inserted later
+  join,           ///< at[0], outside the hull, is joined to a hull edge: faces[0] is the new face
+  flip,           ///< an edge flips to at[0]: faces[0], faces[1] are the new triangles
+  in_circle,      ///< is at[3] inside the circle of at[0..2]? `sign` answers (POSITIVE: inside)
+  replace,        ///< at[0] took v∞'s place in the faces `face_list`, in order around it
+  done,           ///< the algorithm is finished; `tr` is its result before renumbering
+};
+
+/// One event, as the algorithm reports it (see the file comment).
+struct Report {
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);  ///< an unused index
+
+  Event event = Event::consider;                     ///< what happened
+  std::array<std::size_t, 4> at{none, none, none, none};  ///< the points concerned, input indices
+  std::span<const std::size_t> chain;                ///< the chain or stack (hulls), input indices
+  const Triangulation* tr = nullptr;                 ///< the triangulation now (triangulations)
+  std::span<const std::uint32_t> input_of;           ///< vertex v of `tr` is input point input_of[v]
+                                                     ///< (empty: v is already an input index)
+  std::array<std::uint32_t, 2> faces{0, 0};          ///< triangles of `tr` concerned (flip, join)
+  std::span<const std::uint32_t> face_list;          ///< more triangles of `tr` (replace)
+  Sign sign = ZERO;                                  ///< a predicate's answer (in_circle)
+  bool tie = false;  ///< the exact predicate was zero and the symbolic perturbation decided
+
+  /// The input index of vertex v of `tr`.
+  std::size_t input(std::uint32_t v) const { return input_of.empty() ? v : input_of[v]; }
+  /// The points concerned (the used entries of `at`).
+  std::span<const std::size_t> points() const {
+    std::size_t n = 0;
+    while (n < at.size() && at[n] != none) ++n;
+    return {at.data(), n};
+  }
+};
+
+/// A report about points, with the chain or stack (hull algorithms).
+inline Report about(Event e, std::initializer_list<std::size_t> at, std::span<const std::size_t> chain = {}) {
+  Report r;
+  r.event = e;
+  std::size_t k = 0;
+  for (std::size_t i : at) r.at[k++] = i;
+  r.chain = chain;
+  return r;
+}
+
+/// A report about a triangulation whose vertex v is input point input_of[v] (`at` already in
+/// input indices; faces are triangles of tr).
+inline Report about(Event e, const Triangulation& tr, std::span<const std::uint32_t> input_of,
+                    std::initializer_list<std::size_t> at, std::array<std::uint32_t, 2> faces = {0, 0}) {
+  Report r = about(e, at);
+  r.tr = &tr;
+  r.input_of = input_of;
+  r.faces = faces;
+  return r;
+}
+
+/// A hook: anything an algorithm can report to.
+template <class T>
+concept Hook = std::invocable<T&, const Report&>;
+
+/// The hook that hears nothing: the default of every algorithm, free (file comment).
+struct NoTrace {
+  /// Hears nothing.
+  void operator()(const Report&) const noexcept {}
+};
+
+/// False for `NoTrace`: the algorithm then builds no report.
+template <class T>
+inline constexpr bool traced = !std::is_same_v<std::remove_cvref_t<T>, NoTrace>;
+
+/// Calls `hook(make())` when the hook listens; for `NoTrace`, nothing at all (not even `make`).
+template <class H, class F>
+void tell(H& hook, F&& make) {
+  if constexpr (traced<H>) hook(make());
+}
+
+/// Calls `hook(about(e, at, chain))`, with `sign`, when the hook listens (hull algorithms).
+template <class H>
+void tell(H& hook, Event e, std::initializer_list<std::size_t> at, std::span<const std::size_t> chain = {},
+          Sign sign = ZERO) {
+  if constexpr (traced<H>) {
+    Report r = about(e, at, chain);
+    r.sign = sign;
+    hook(r);
+  }
+}
+
+}  // namespace trace
+
+using trace::NoTrace;
+using trace::tell;
+
+}  // namespace t2
