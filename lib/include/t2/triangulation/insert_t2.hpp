@@ -237,19 +237,20 @@ class T2Builder {
     if (before.first != kNone)  // step 31: the antipode of the hull vertex z
       lunes_.push_back({before.second, p, before.first, after.second});
     hull_ = false;
-    if constexpr (trace::traced<Trace>) {
-      trace::Report r = trace::about(trace::Event::replace, tr_, order_, {order_[p]});
-      r.face_list = around;
-      trace_(r);
-    }
+    report(trace::Event::replace, {order_[p]}, {0, 0}, around);
     report(before.first != kNone ? trace::Event::antipode : trace::Event::cover, {order_[p]});
     return true;
   }
   //< t2-outside
 
   // Tells the hook about the points `at` (input indices) and the faces of tr.
-  void report(trace::Event e, std::initializer_list<std::size_t> at, std::array<Index, 2> faces = {0, 0}) {
-    if constexpr (trace::traced<Trace>) trace_(trace::about(e, tr_, order_, at, faces));
+  void report(trace::Event e, std::initializer_list<std::size_t> at, std::array<Index, 2> faces = {0, 0},
+              std::span<const Index> face_list = {}) {
+    if constexpr (trace::traced<Trace>) {
+      trace::Report r = trace::about(e, tr_, order_, at, faces);
+      r.face_list = face_list;
+      trace_(r);
+    }
   }
 
   Triangulation& tr_;
