@@ -189,4 +189,45 @@ Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const Basi
   return detail::compare_distance_general(a, b, c);
 }
 
+/// Compares the distance d(a, b) with the distance d(c, d), in the order of the file comment
+/// (finite on one side, then +∞, then "beyond infinity" across sides): NEGATIVE when a, b are
+/// the nearer pair, ZERO when the distances are equal, POSITIVE otherwise. Exact. Throws
+/// `Undefined` when a and b, or c and d, are both on Ω (the distance between two directions is
+/// an angle, not a value of T¹). This is the order of `compare_distance_values` on
+/// `squared_distance(a, b)` and `squared_distance(c, d)`, decided without constructing them.
+///
+/// **Proof.** A pair's class, 0 (same side), 1 (exactly one on Ω) or 2 (opposite sides), is read
+/// from the signs of its weights, and a lower class is nearer. In classes 0 and 2 the values are
+/// [±1, |A − B|²] and [±1, |C − D|²], and with u = b_x a_w − a_x b_w (likewise u_y, v, v_y)
+///
+///     E = (uₓ² + u_y²)(c_w d_w)² − (vₓ² + v_y²)(a_w b_w)² = (a_w b_w c_w d_w)² (|A − B|² − |C − D|²),
+///
+/// whose sign is that of |A − B|² − |C − D|²: the answer in class 0, and its opposite in class 2
+/// (there a larger Euclidean length is nearer to +∞, hence smaller). Two pairs of class 1 are
+/// both at +∞. E has 16 monomials of degree 2 in each point; `sign_of_poly` derives its bound.
+template <class T>
+Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c,
+                      const BasicPoint<T>& d) {
+  const auto pair_class = [](const BasicPoint<T>& p, const BasicPoint<T>& q) {
+    const Sign sp = sign_of(p.w()), sq = sign_of(q.w());
+    if (sp == ZERO && sq == ZERO)
+      throw Undefined("compare_distance(a, b, c, d) is undefined when both points of a pair are on Omega: "
+                      "the distance between two directions is an angle, not a value of T1");
+    if (sp == ZERO || sq == ZERO) return 1;
+    return sp == sq ? 0 : 2;
+  };
+  const int kab = pair_class(a, b), kcd = pair_class(c, d);
+  if (kab != kcd) return kab < kcd ? NEGATIVE : POSITIVE;
+  if (kab == 1) return ZERO;
+  const Sign e = sign_of_poly(
+      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
+         const auto& cw, const auto& cx, const auto& cy, const auto& dw, const auto& dx, const auto& dy) {
+        const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
+        const auto vx = dx * cw - cx * dw, vy = dy * cw - cy * dw;
+        return (ux * ux + uy * uy) * (cw * dw) * (cw * dw) - (vx * vx + vy * vy) * (aw * bw) * (aw * bw);
+      },
+      a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
+  return kab == 0 ? e : -e;
+}
+
 }  // namespace t2
