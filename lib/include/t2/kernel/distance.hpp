@@ -38,7 +38,8 @@
 ///   |error| ≤ 16γ₉·(M_aM_bM_c)², C = 144u(1 + 2⁻⁴⁰), trusted for M ∈ [2⁻¹⁵⁰, 2¹⁵⁰];
 /// - c on Ω (the sweep), a_w(uₓbₓ + u_yb_y) − b_w(uₓaₓ + u_ya_y): 4 monomials of degree 1 in
 ///   each point, k = 4 (product, sum, product, difference): C = 16u(1 + 2⁻⁴⁰);
-/// - the angle rule: the dot products v·c (3 monomials, k = 3, C = 9u(1 + 2⁻⁴⁰)), then
+/// - the angle rule and the 90° convention: the dot products v·c (3 monomials, k = 3,
+///   C = 9u(1 + 2⁻⁴⁰)), then
 ///   (a·c)²(b·b) − (b·c)²(a·a): 54 monomials of degree 2 in each point, k = 12 (3 in a dot
 ///   product, 7 in its square, 3 + 7 + 1 in the product, 1 in the difference): C = 648u(1 + 2⁻⁴⁰).
 /// The test test_filter_bound checks that filter.hpp derives these constants.
@@ -126,6 +127,13 @@ template <class T>
 [[gnu::noinline]] Sign compare_distance_general(const BasicPoint<T>& a, const BasicPoint<T>& b,
                                                 const BasicPoint<T>& c) {
   const int ia = a.w() == 0, ib = b.w() == 0, ic = c.w() == 0;
+  if (ic && ia + ib == 1) {
+    // The 90° convention: the proper point is 90° from c, so the one on Ω is nearer iff its
+    // angle to c is under 90°, i.e. iff its dot product with c is positive.
+    const Sign s = sign_of_poly([](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x + p.y * q.y; },
+                                ia ? a : b, c);
+    return ia ? -s : s;
+  }
   if (ia + ib + ic >= 2) return compare_angles_at_origin(a, b, c);
   const Sign sa = sign_of(a.w()), sb = sign_of(b.w()), sc = sign_of(c.w());
   if (ic) {
@@ -174,12 +182,16 @@ template <class T>
 ///   proper point c' run off to c on the front makes the front point nearer (the back one is
 ///   beyond infinity), letting it run off on the back makes the back point nearer: no answer
 ///   is right. The seed states the sweep rule for the same canonical hemisphere only.
-/// - **Two or three points on Ω — the angle rule of §4.3.1:** compare the angles ∠(a o c) and
-///   ∠(b o c) between the triples seen as vectors of R³ (o its origin). When a and b are on Ω
-///   and c is proper, and when all three are on Ω, this is again the limit of the proper
-///   configuration (the triple angle is the angle between directions). When c and one of a, b
-///   are on Ω and the other is proper, it is a convention of the seed, not a limit: it depends
-///   on where the origin [1, 0, 0] is.
+/// - **a and b on Ω, c proper, or all three on Ω — the angle rule of §4.3.1:** compare the
+///   angles ∠(a o c) and ∠(b o c) between the triples seen as vectors of R³ (o its origin).
+///   Both cases are the limit of the proper configuration (with all three on Ω the triple
+///   angle is the angle between directions).
+/// - **c and one of a, b on Ω, the other proper — the 90° convention of chapter 03, §5:** no
+///   limit decides, and the seed's angle at the origin would depend on where the origin
+///   [1, 0, 0] is. Every proper point, on either side, counts as 90° from c: the point of Ω is
+///   nearer iff it is less than 90° from c, tied at exactly 90°, farther beyond. It is the
+///   order of the disks around c (incircle.hpp: a circle centred on Ω through a proper point
+///   is a line perpendicular to c, and meets Ω 90° from c).
 template <class T>
 Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
   if constexpr (std::is_same_v<T, double>) {
