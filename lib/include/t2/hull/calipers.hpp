@@ -177,4 +177,9 @@ std::optional<Width> width(std::span<const Point> P) {
   return Width{at[best->first], at[(best->first + 1) % h], at[best->second]};
 }
 
+// The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+extern template std::optional<Width> width<HullTraits>(std::span<const Point>);
+#endif
+
 }  // namespace t2

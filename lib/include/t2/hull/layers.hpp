@@ -60,4 +60,9 @@ std::vector<std::vector<std::size_t>> convex_layers(std::span<const Point> P,
   return layers;
 }
 
+// The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+extern template std::vector<std::vector<std::size_t>> convex_layers<HullTraits>(std::span<const Point>, LayersMethod);
+#endif
+
 }  // namespace t2

@@ -312,6 +312,12 @@ inline Triangulation delaunay(const std::vector<Point>& points) { return delauna
 inline Triangulation delaunay(std::vector<Point>&& points) { return delaunay_with(std::move(points)); }
 //< delaunay
 
+// The default instantiations are compiled once, in lib/src/triangulation/delaunay.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+extern template Triangulation delaunay_with<DelaunayTraits>(std::span<const Point>, DelaunayTraits);
+extern template Triangulation delaunay_with<DelaunayTraits>(std::vector<Point>&&, DelaunayTraits);
+#endif
+
 }  // namespace t2
 
 #include "t2/triangulation/delaunay_t2.hpp"  // IWYU pragma: export
