@@ -17,29 +17,17 @@
 #include "t2/kernel/orient.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/voronoi/complex.hpp"
+#include "voronoi_inputs.hpp"
 
 namespace t2 {
 namespace {
 
+using testing::grid_sites;
+using testing::scattered_sites;
+
 using Index = Triangulation::Index;
 using Face = std::array<Index, 3>;
 
-/// n points on an even grid of `side` values a coordinate, on side w (duplicates, collinear and
-/// cocircular points are frequent).
-std::vector<Point> grid(std::size_t n, int side, double w, std::mt19937& rng) {
-  std::uniform_int_distribution<int> d(-side, side);
-  std::vector<Point> p;
-  for (std::size_t k = 0; k < n; ++k) p.push_back(Point(w, w * 2 * d(rng), w * 2 * d(rng)));
-  return p;
-}
-
-/// n points with random double coordinates (general position in practice).
-std::vector<Point> scattered(std::size_t n, double w, std::mt19937& rng) {
-  std::uniform_real_distribution<double> d(-1, 1);
-  std::vector<Point> p;
-  for (std::size_t k = 0; k < n; ++k) p.push_back(Point(w, w * d(rng), w * d(rng)));
-  return p;
-}
 
 /// Empty when the faces form a closed oriented surface of genus 0 on the distinct sites.
 std::string sphere_error(const DelaunayComplex& dc) {
@@ -98,18 +86,18 @@ bool check(const std::vector<Point>& pts, const char* what) {
 
 TEST(DelaunayComplex, FrontGridsCloseIntoASphereWithEmptyDisks) {
   std::mt19937 rng(1);
-  for (int r = 0; r < 60; ++r) check(grid(3 + r % 25, 2 + r % 5, 1, rng), "front grid");
+  for (int r = 0; r < 60; ++r) check(grid_sites(3 + r % 25, 2 + r % 5, 1, rng), "front grid");
 }
 
 TEST(DelaunayComplex, BackAndMixedInput) {
   std::mt19937 rng(2);
   int defined = 0;
   for (int r = 0; r < 40; ++r) {
-    check(grid(3 + r % 20, 3, -1, rng), "back grid");
-    auto f = grid(2 + r % 9, 4, 1, rng), b = grid(2 + r % 7, 4, -1, rng);
+    check(grid_sites(3 + r % 20, 3, -1, rng), "back grid");
+    auto f = grid_sites(2 + r % 9, 4, 1, rng), b = grid_sites(2 + r % 7, 4, -1, rng);
     f.insert(f.end(), b.begin(), b.end());
     defined += check(f, "both sides");
-    auto s = scattered(5 + r % 20, 1, rng), t = scattered(1 + r % 4, -1, rng);
+    auto s = scattered_sites(5 + r % 20, 1, rng), t = scattered_sites(1 + r % 4, -1, rng);
     for (auto& q : t) q = Point(q.w(), q.x() * 0.01 + 3, q.y() * 0.01);  // a hull: back sites near one point
     s.insert(s.end(), t.begin(), t.end());
     EXPECT_TRUE(check(s, "both sides with a hull"));
@@ -121,11 +109,11 @@ TEST(DelaunayComplex, AntipodalPairsAndSitesOnOmega) {
   std::mt19937 rng(3);
   int defined = 0;
   for (int r = 0; r < 30; ++r) {
-    auto f = grid(3 + r % 8, 3, 1, rng);
+    auto f = grid_sites(3 + r % 8, 3, 1, rng);
     const std::size_t n = f.size();
     for (std::size_t k = 0; k < n; k += 2) f.push_back(antipode(f[k]));
     defined += check(f, "antipodal pairs");
-    auto g = grid(3 + r % 8, 3, 1, rng), h = grid(3 + r % 8, 3, -1, rng);
+    auto g = grid_sites(3 + r % 8, 3, 1, rng), h = grid_sites(3 + r % 8, 3, -1, rng);
     g.insert(g.end(), h.begin(), h.end());
     g.push_back(Point::at_infinity(1, 2));
     g.push_back(Point::at_infinity(-3, 1));
@@ -186,7 +174,7 @@ Face rotated(Face t) {
 TEST(DelaunayComplex, FrontOnlyBackFacesAreTheFarthestPointDelaunayTriangles) {
   std::mt19937 rng(4);
   for (int r = 0; r < 40; ++r) {
-    const auto p = scattered(4 + r % 14, 1, rng);  // general position: the oracle's set is exact
+    const auto p = scattered_sites(4 + r % 14, 1, rng);  // general position: the oracle's set is exact
     const DelaunayComplex dc = delaunay_complex(p);
     ASSERT_EQ(sphere_error(dc), "");
     std::set<Face> back;
@@ -195,7 +183,7 @@ TEST(DelaunayComplex, FrontOnlyBackFacesAreTheFarthestPointDelaunayTriangles) {
     EXPECT_EQ(back, farthest_brute(p)) << "round " << r;
   }
   for (int r = 0; r < 40; ++r) {  // grids: cocircular corners, so any fan is right: a subset
-    const auto p = grid(4 + r % 14, 3, 1, rng);
+    const auto p = grid_sites(4 + r % 14, 3, 1, rng);
     const DelaunayComplex dc = delaunay_complex(p);
     const std::set<Face> brute = farthest_brute(p);
     for (const Face& t : dc.faces) {
