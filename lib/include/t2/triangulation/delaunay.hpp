@@ -151,9 +151,10 @@ bool in_conflict(const K& k, const Triangulation& tr, Triangulation::Index t, co
   return ap != ZERO && ap == pb;  // strictly between a and b on their line
 }
 
-/// The triangulation of T² input (defined in delaunay_t2.hpp, included at the end).
+/// The triangulation of T² input (defined in delaunay_t2.hpp, included at the end); with
+/// `whole_sphere` the clockwise faces beyond a hull are kept (the Delaunay complex, complex.hpp).
 template <class K>
-Triangulation delaunay_t2(std::span<const Point> input, const K& kernel);
+Triangulation delaunay_t2(std::span<const Point> input, const K& kernel, bool whole_sphere = false);
 
 /// Degenerate input: dimension 0 or 1 (no triangle); duplicates found by sorting.
 template <class K>
