@@ -23,7 +23,8 @@ using testing::triple;
 using R3 = std::array<Rational, 3>;
 
 R3 cross(const R3& a, const R3& b) {
-  return {Rational(a[1] * b[2] - a[2] * b[1]), Rational(a[2] * b[0] - a[0] * b[2]), Rational(a[0] * b[1] - a[1] * b[0])};
+  return {Rational(a[1] * b[2] - a[2] * b[1]), Rational(a[2] * b[0] - a[0] * b[2]),
+          Rational(a[0] * b[1] - a[1] * b[0])};
 }
 bool zero(const R3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 Rational dot(const R3& a, const R3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -183,7 +184,8 @@ TEST(Intersect, BruteForceOnTheWholeOfT2) {  // back, crossing Ω, rays and arcs
   for (int round = 0; round < 40 * testing::scale(); ++round) {
     std::vector<Segment> S;
     while (S.size() < 30) {
-      const double a[6] = {double(w(rng)), double(c(rng)), double(c(rng)), double(w(rng)), double(c(rng)), double(c(rng))};
+      double a[6];
+      for (int k = 0; k < 6; ++k) a[k] = k % 3 == 0 ? w(rng) : c(rng);
       if ((a[0] == 0 && a[1] == 0 && a[2] == 0) || (a[3] == 0 && a[4] == 0 && a[5] == 0)) continue;
       const Point p(a[0], a[1], a[2]), q(a[3], a[4], a[5]);
       if (p == antipode(q)) continue;

@@ -49,7 +49,8 @@ R3 coefficients(const L& l) {
 template <class L>
 R3 meet_oracle(const L& l, const L& m) {
   const R3 a = coefficients(l), b = coefficients(m);
-  return {Rational(a[1] * b[2] - a[2] * b[1]), Rational(a[2] * b[0] - a[0] * b[2]), Rational(a[0] * b[1] - a[1] * b[0])};
+  return {Rational(a[1] * b[2] - a[2] * b[1]), Rational(a[2] * b[0] - a[0] * b[2]),
+          Rational(a[0] * b[1] - a[1] * b[0])};
 }
 /// Normalized (x, y): divided by |w|, or by max(|x|, |y|) on Ω (lexicographic.hpp).
 std::array<Rational, 2> normal(const R3& p) {

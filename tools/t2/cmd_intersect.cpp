@@ -83,6 +83,7 @@ Action setup(CLI::App& app) {
 
 }  // namespace
 
-T2_COMMAND({"intersect", "the intersection points of a scene's segments (exact, with the segments through each)", setup});
+T2_COMMAND({"intersect", "the intersection points of a scene's segments (exact, with the segments through them)",
+            setup});
 
 }  // namespace t2cli
