@@ -180,7 +180,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
 // whose data/ is the repository's), and write their pages (some seconds of CPU in all).
 TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
   fs::create_directory_symlink(fs::path(T2_SOURCE_DIR) / "data", dir_ / "data");
-  const std::regex command("t2 animate ([a-z-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
+  const std::regex command("t2 animate ([a-z0-9-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
   int commands = 0;
   for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
     std::string md;  // the chapter's text: chapter.md, then its later parts chapter-2.md ...
