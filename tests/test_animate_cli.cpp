@@ -89,21 +89,21 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
   generate("both.t2", gen::Kind::both_sides, animated_points(), 3);
   generate("back.t2", gen::Kind::both_sides, animated_points(), 4, 1.0);  // every point behind
   for (const char* file : {"u.t2", "both.t2", "back.t2"})
-    for (const std::string algo : {"jarvis", "graham", "merge-hull"}) {
+    for (const std::string algo : {"jarvis", "graham", "merge"}) {
       const std::string what = algo + " " + file;
       const Result r = t2("animate " + algo + " " + file + " -o out.html");
       ASSERT_EQ(r.status, 0) << what << r.err;
       EXPECT_TRUE(has(r.out, "out.html: ")) << r.out;
       const std::string html = slurp(dir_ / "out.html");
       expect_self_contained(html, what);
-      const Result h = t2(std::string("hull ") + file + " --algorithm " + (algo == "merge-hull" ? "merge" : algo));
+      const Result h = t2(std::string("hull ") + file + " --algorithm " + algo);  // one name, one algorithm
       ASSERT_EQ(h.status, 0);
       EXPECT_TRUE(same_cycle(numbers(last_step_field(html, "chain")), numbers(h.out)))
           << what << ": " << last_step_field(html, "chain") << " vs " << h.out;
       // The merge of the points of one half (front or back) merges nothing: that half's chain is
       // the whole algorithm, shown at the lecture level (hull_recorder.hpp), and there is no
       // deeper step; on both sides the lecture level shows the two halves' hulls.
-      const bool merge = algo == "merge-hull", one_half = merge && std::string(file) != "both.t2";
+      const bool merge = algo == "merge", one_half = merge && std::string(file) != "both.t2";
       EXPECT_EQ(has(html, "\"depth\":1"), !one_half) << what << ": debugging steps";
       EXPECT_EQ(has(html, "The hull of the positive half"), merge && !one_half) << what;
       EXPECT_EQ(has(html, "The hull of the negative half"), merge && !one_half) << what;
@@ -119,7 +119,7 @@ TEST_F(AnimateCli, TriangulationsEndWithTheTriangulation) {
   auto triangles = delaunay(P).finite_triangles();
   std::sort(triangles.begin(), triangles.end());
   for (const auto& t : triangles) expected.insert(expected.end(), t.begin(), t.end());
-  for (const std::string algo : {"delaunay", "triangulate"}) {
+  for (const std::string algo : {"delaunay", "triangulate", "triangulate-t2"}) {
     const Result r = t2("animate " + algo + " d.t2 -o " + algo + ".html");
     ASSERT_EQ(r.status, 0) << algo << r.err;
     const std::string html = slurp(dir_ / (algo + ".html"));
@@ -141,7 +141,7 @@ TEST_F(AnimateCli, BadInputNoHullAndTooManyPointsLeaveTheOutputAlone) {
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(has(r.err, "bad.t2:2")) << r.err;
   write("anti.t2", "1 1\n0 1\n-1 -1 -1\n");
-  for (const char* algo : {"jarvis", "graham", "merge-hull"}) {
+  for (const char* algo : {"jarvis", "graham", "merge"}) {
     r = t2(std::string("animate ") + algo + " anti.t2 -o out.html");
     EXPECT_EQ(r.status, 3) << algo;
     EXPECT_TRUE(has(r.err, "p0 and p2 are antipodal")) << r.err;
@@ -166,7 +166,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   write("line.t2", "0 0\n1 1\n2 2\n");
   write("none.t2", "# nothing\n");
   for (const char* file : {"one.t2", "line.t2", "none.t2"})
-    for (const char* algo : {"jarvis", "graham", "merge-hull", "triangulate", "sweep", "delaunay"}) {
+    for (const char* algo : {"jarvis", "graham", "merge", "triangulate", "triangulate-t2", "delaunay"}) {
       const Result r = t2(std::string("animate ") + algo + " " + file + " -o x.html");
       EXPECT_EQ(r.status, 0) << algo << " " << file << r.err;
       EXPECT_TRUE(has(slurp(dir_ / "x.html"), "\"kind\":\"answer\"")) << algo << " " << file;
@@ -180,7 +180,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
 // whose data/ is the repository's), and write their pages (some seconds of CPU in all).
 TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
   fs::create_directory_symlink(fs::path(T2_SOURCE_DIR) / "data", dir_ / "data");
-  const std::regex command("t2 animate ([a-z-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
+  const std::regex command("t2 animate ([a-z0-9-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
   int commands = 0;
   for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
     std::string md;  // the chapter's text: chapter.md, then its later parts chapter-2.md ...
@@ -193,8 +193,8 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
     int in_chapter = 0;
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
-      EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge-hull" || algo == "triangulate" ||
-                  algo == "sweep" || algo == "delaunay")
+      EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge" || algo == "triangulate" ||
+                  algo == "triangulate-t2" || algo == "delaunay")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

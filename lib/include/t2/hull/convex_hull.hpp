@@ -27,6 +27,12 @@ enum class HullAlgorithm {
   monotone,   ///< Andrew's monotone chain, O(n log n)
 };
 
+/// Every hull algorithm, in the order of `t2 hull --help`: the list the command line's choices
+/// come from (with `name`).
+inline constexpr HullAlgorithm hull_algorithms[] = {HullAlgorithm::automatic, HullAlgorithm::merge,
+                                                    HullAlgorithm::jarvis,    HullAlgorithm::graham,
+                                                    HullAlgorithm::quickhull, HullAlgorithm::monotone};
+
 /// The name of an algorithm ("merge", "jarvis", ...), as `t2 hull --algorithm` takes it.
 inline std::string_view name(HullAlgorithm a) {
   switch (a) {

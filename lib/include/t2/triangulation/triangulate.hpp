@@ -28,8 +28,9 @@
 /// index) joins: the third vertex of the first triangle, a point on its first edge, or a swept
 /// point before its flips; and `trace.flipped(tr, t, u)` after each flip of step 35 (t and u the
 /// new triangles, as `Triangulation::flip` leaves them). The default `NoSweepTrace` does nothing
-/// and is inlined away; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`.
-/// T² input is not traced (it takes no sweep).
+/// and is inlined away; t2/trace/sweep_recorder.hpp records the steps for `t2 animate
+/// triangulate`. T² input is not traced here (it takes no sweep): `t2 animate triangulate` traces
+/// it through `triangulate_t2` (insert_t2.hpp).
 
 #include <algorithm>
 #include <cstdint>
