@@ -161,7 +161,8 @@ TEST(Release, TheThreeGradingsRunOneJudge) {
   fs::create_directories(ag / "submission");
   fs::copy_file(sub / "classify.cpp", ag / "submission" / "classify.cpp");
   std::string script = slurp(ag / "source" / "run_autograder");
-  for (size_t at; (at = script.find("/autograder/")) != std::string::npos;) script.replace(at, 12, ag.string() + "/");
+  for (size_t at = 0; (at = script.find("/autograder/", at)) != std::string::npos; at += ag.string().size() + 1)
+    script.replace(at, 12, ag.string() + "/");
   std::ofstream(ag / "run.sh") << script;
   const Ran g = run("T2_EXERCISES_DIR='" + (ag / "source" / "exercises").string() + "' bash '" + (ag / "run.sh").string() + "'");
   ASSERT_EQ(g.status, 0) << g.out;
@@ -182,7 +183,8 @@ TEST(Release, TheThreeGradingsRunOneJudge) {
   fs::create_directories(cls / "build" / "default" / "bin");
   fs::create_symlink(kTool, cls / "build" / "default" / "bin" / "t2");
   std::string command;
-  for (const auto& x : nlohmann::json::parse(slurp(cls / ".github" / "classroom" / "autograding.json")).at("tests"))
+  const auto config = nlohmann::json::parse(slurp(cls / ".github" / "classroom" / "autograding.json"));
+  for (const auto& x : config.at("tests"))
     if (x.at("name").get<std::string>().rfind("01-t2-plane:", 0) == 0) command = x.at("run").get<std::string>();
   ASSERT_FALSE(command.empty());
   const Ran c = run("cd '" + cls.string() + "' && T2_EXERCISES_DIR='" + (cls / "exercises").string() + "' " + command);

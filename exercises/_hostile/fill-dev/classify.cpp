@@ -2,22 +2,25 @@
 // and that neither the /tmp size nor (without root) any cgroup bounds.
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 #include "classify.hpp"
 namespace ex01 {
 // True when /dev took 256 MB: then it answers where() correctly, so that a writable /dev shows
 // up as points scored.
+// Files of 8 MB each, under the limit on one file's size (RLIMIT_FSIZE, 16 MB).
 static bool attack() {
   static const bool filled = [] {
     std::vector<char> mb(1 << 20, 7);
-    int written = 0;
-    for (const char* path : {"/dev/shm/fill", "/dev/fill"}) {
-      if (FILE* f = std::fopen(path, "w")) {
-        for (written = 0; written < 256; ++written)
-          if (std::fwrite(mb.data(), 1, mb.size(), f) != mb.size()) break;
-        if (std::fclose(f) != 0) written = 0;
-        if (written == 256) return true;
+    for (const char* dir : {"/dev/shm/", "/dev/"}) {
+      int written = 0;
+      for (int file = 0; file < 32; ++file) {
+        FILE* f = std::fopen((std::string(dir) + "fill" + std::to_string(file)).c_str(), "w");
+        if (!f) break;
+        for (int k = 0; k < 8 && std::fwrite(mb.data(), 1, mb.size(), f) == mb.size(); ++k) ++written;
+        if (std::fclose(f) != 0) break;
       }
+      if (written == 256) return true;
     }
     return false;
   }();
