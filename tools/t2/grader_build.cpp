@@ -147,7 +147,8 @@ std::vector<std::pair<fs::path, fs::path>> driver_runtime(const fs::path& checke
   if (sanitized_tool()) return r;
   static const char* const kAllowed[] = {"ld-linux", "libc.so", "libm.so", "libstdc++.so", "libgcc_s.so", "libfmt.so",
                                          "libpthread.so", "libmvec.so"};
-  std::istringstream in(run_out({"ldd", checker.string()}));
+  // The checker may not need fmt (linked as needed); this tool always does.
+  std::istringstream in(run_out({"ldd", checker.string()}) + run_out({"ldd", fs::read_symlink("/proc/self/exe").string()}));
   for (std::string line; std::getline(in, line);) {
     // "\tlibfmt.so.9 => /lib/x86_64-linux-gnu/libfmt.so.9 (0x...)" or "\t/lib64/ld-linux-x86-64.so.2 (0x...)"
     std::istringstream w(line);
@@ -157,7 +158,8 @@ std::vector<std::pair<fs::path, fs::path>> driver_runtime(const fs::path& checke
     if (path.empty() || path[0] != '/') continue;
     const std::string base = fs::path(name).filename().string();
     for (const char* a : kAllowed)
-      if (base.rfind(a, 0) == 0) r.push_back({fs::canonical(path), path});
+      if (base.rfind(a, 0) == 0 && std::find_if(r.begin(), r.end(), [&](const auto& e) { return e.second == path; }) == r.end())
+        r.push_back({fs::canonical(path), path});
   }
   if (r.empty()) throw GraderError("internal error: ldd finds no shared library in " + checker.string());
   return r;
