@@ -179,7 +179,9 @@ std::optional<Width> width(std::span<const Point> P) {
 
 // The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
 #ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
 extern template std::optional<Width> width<HullTraits>(std::span<const Point>);
+/// @endcond
 #endif
 
 }  // namespace t2

@@ -93,10 +93,12 @@ bool has_hull(std::span<const Point> P) {
 
 // The default instantiations are compiled once, in lib/src/hull/convex_hull.cpp.
 #ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
 extern template std::vector<std::size_t> convex_hull<HullTraits, NoTrace>(std::span<const Point>, HullAlgorithm,
                                                                           NoTrace&&);
 extern template std::vector<std::size_t> convex_hull<HullTraits, NoTrace>(const std::vector<Point>&, HullAlgorithm,
                                                                           NoTrace&&);
+/// @endcond
 #endif
 
 }  // namespace t2

@@ -74,7 +74,9 @@ std::optional<std::pair<std::size_t, std::size_t>> diameter(std::span<const Poin
 
 // The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
 #ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
 extern template std::optional<std::pair<std::size_t, std::size_t>> diameter<HullTraits>(std::span<const Point>);
+/// @endcond
 #endif
 
 }  // namespace t2

@@ -69,7 +69,9 @@ std::vector<std::vector<std::size_t>> convex_layers(std::span<const Point> P,
 
 // The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
 #ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
 extern template std::vector<std::vector<std::size_t>> convex_layers<HullTraits>(std::span<const Point>, LayersMethod);
+/// @endcond
 #endif
 
 }  // namespace t2

@@ -315,8 +315,10 @@ inline Triangulation delaunay(std::vector<Point>&& points) { return delaunay_wit
 
 // The default instantiations are compiled once, in lib/src/triangulation/delaunay.cpp.
 #ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
 extern template Triangulation delaunay_with<DelaunayTraits>(std::span<const Point>, DelaunayTraits);
 extern template Triangulation delaunay_with<DelaunayTraits>(std::vector<Point>&&, DelaunayTraits);
+/// @endcond
 #endif
 
 }  // namespace t2

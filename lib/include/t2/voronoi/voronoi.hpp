@@ -42,7 +42,10 @@ struct VoronoiDiagram {
   using Index = Triangulation::Index;  ///< site and vertex indices
   /// A Voronoi edge from vertex `a` to vertex `b` between the cells of sites `s` and `t`.
   struct Edge {
-    Index a, b, s, t;  ///< the vertices, then the sites
+    Index a;  ///< the first vertex
+    Index b;  ///< the second vertex
+    Index s;  ///< the site on one side
+    Index t;  ///< the site on the other side
   };
   std::vector<ExactPoint> vertices;              ///< exact homogeneous circumcentres
   std::vector<std::vector<Index>> vertex_sites;  ///< the cells at each vertex, counter-clockwise
