@@ -12,14 +12,12 @@
 // peaks of different runs never add up. This program links CGAL and qhull: they are peers of the
 // benchmarks, never dependencies of the library or of the `t2` tool.
 //
-// PROBLEM IMPL: hull t2|graham|jarvis|monotone|quickhull|merge|cgal|qhull|raw|exact;
-//               layers jarvis|graham (the two ways of seed 003; size: the number of layers);
-//               delaunay t2|owned|divide|cgal|raw|exact (owned: t2::delaunay(std::move(P)), the
-//               result takes the input vector; divide: Guibas-Stolfi divide and conquer;
-//               raw: t2's code on plain double predicates, inexact; exact: exact arithmetic on
-//               every call, no floating-point filter);
-//               hull3d quickhull|incremental|gift-wrap|cgal|qhull (points of R^3, INPUT cube or
-//               sphere; size: the number of hull vertices).
+// PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
+// delaunay, triangulation, hull3d, ...) and an implementation of it: a t2 algorithm registered
+// with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
+// cgal (hull, delaunay, hull3d), qhull (hull, hull3d), raw and exact (hull, delaunay: t2's own
+// code on plain double predicates, inexact, or on exact arithmetic at every call, no filter).
+// A problem of space 3 takes points of R^3 (INPUT cube or sphere).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
 // cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
 // Cartesian doubles) so that every implementation sees the same doubles.
@@ -42,7 +40,6 @@ extern "C" {
 #include <ctime>
 #include <exception>
 #include <functional>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -50,15 +47,16 @@ extern "C" {
 #include "t2/gen/generate.hpp"
 #include "t2/hull.hpp"
 #include "t2/hull3d.hpp"
-#include "t2/hull/layers.hpp"
 #include "t2/kernel/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
-#include "t2/triangulation/divide.hpp"
+#include "algorithms/answer.hpp"
+#include "algorithms/registry.hpp"
 #include "raw_kernel.hpp"
 
 namespace {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using t2cli::algorithms::finite_count;  // a triangulation's size, counted as t2's runs count it
 
 struct Usage : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -164,13 +162,8 @@ long rss_kb() {
 // A prepared run: the conversion a peer needs is made before the clock starts.
 using Run = std::function<std::size_t()>;
 
-Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
-  static const std::map<std::string, t2::HullAlgorithm> own = {
-      {"t2", t2::HullAlgorithm::automatic}, {"graham", t2::HullAlgorithm::graham},
-      {"jarvis", t2::HullAlgorithm::jarvis}, {"monotone", t2::HullAlgorithm::monotone},
-      {"quickhull", t2::HullAlgorithm::quickhull}, {"merge", t2::HullAlgorithm::merge}};
-  if (auto it = own.find(impl); it != own.end())
-    return [&P, a = it->second] { return t2::convex_hull(P, a).size(); };
+// The runs of the peers (algorithms/peers.cpp) on each problem; nullptr when it has none.
+Run hull_peer(const std::string& impl, const std::vector<t2::Point>& P) {
   if (impl == "raw") return [&P] { return t2::convex_hull<RawHullTraits>(P).size(); };
   if (impl == "exact") return [&P] { return t2::convex_hull<ExactOnlyHullTraits>(P).size(); };
   if (impl == "cgal") {
@@ -187,28 +180,10 @@ Run hull_run(const std::string& impl, const std::vector<t2::Point>& P) {
     for (const auto& p : P) xy->insert(xy->end(), {p.x(), p.y()});
     return [xy] { return qhull_hull(*xy); };
   }
-  throw Usage("unknown hull implementation " + impl);
+  return nullptr;
 }
 
-Run layers_run(const std::string& impl, const std::vector<t2::Point>& P) {
-  if (impl != "jarvis" && impl != "graham") throw Usage("unknown layers implementation " + impl);
-  const auto m = impl == "jarvis" ? t2::LayersMethod::jarvis : t2::LayersMethod::graham;
-  return [&P, m] { return t2::convex_layers(std::span<const t2::Point>(P), m).size(); };
-}
-
-// The number of finite triangles of a triangulation, counted in place (finite_triangles() would
-// copy them, 24 bytes a point, and hull_edges() the hull, up to 8 bytes a point on circle input:
-// memory in the measured peak that CGAL's number_of_faces() does not pay).
-std::size_t finite_count(const t2::Triangulation& tr) {
-  std::size_t finite = 0;
-  for (t2::Triangulation::Index t = 0; t < tr.size(); ++t) finite += !tr.is_infinite(t);
-  return finite;
-}
-
-Run delaunay_run(const std::string& impl, std::vector<t2::Point>& P) {
-  if (impl == "t2") return [&P] { return finite_count(t2::delaunay(P)); };
-  if (impl == "owned") return [&P] { return finite_count(t2::delaunay(std::move(P))); };
-  if (impl == "divide") return [&P] { return finite_count(t2::delaunay_divide(P)); };
+Run delaunay_peer(const std::string& impl, std::vector<t2::Point>& P) {
   if (impl == "raw") return [&P] { return finite_count(t2::delaunay_with<t2bench::RawDelaunayTraits>(P)); };
   if (impl == "exact") return [&P] { return finite_count(t2::delaunay_with<ExactOnlyTraits>(P)); };
   if (impl == "cgal") {
@@ -219,23 +194,10 @@ Run delaunay_run(const std::string& impl, std::vector<t2::Point>& P) {
       return dt.number_of_faces();
     };
   }
-  throw Usage("unknown delaunay implementation " + impl);
+  return nullptr;
 }
 
-// The number of vertices of a hull given by its facets.
-std::size_t vertex_count(const t2::Facets& F) {
-  std::vector<std::uint32_t> v;
-  for (const auto& f : F) v.insert(v.end(), f.begin(), f.end());
-  std::sort(v.begin(), v.end());
-  return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
-}
-
-Run hull3d_run(const std::string& impl, const std::vector<t2::Point3>& P) {
-  static const std::map<std::string, t2::Hull3dAlgorithm> own = {{"quickhull", t2::Hull3dAlgorithm::quickhull},
-                                                                 {"incremental", t2::Hull3dAlgorithm::incremental},
-                                                                 {"gift-wrap", t2::Hull3dAlgorithm::gift_wrap}};
-  if (auto it = own.find(impl); it != own.end())
-    return [&P, a = it->second] { return vertex_count(t2::hull_facets_3d(P, a)); };
+Run hull3d_peer(const std::string& impl, const std::vector<t2::Point3>& P) {
   if (impl == "cgal") {
     auto C = std::make_shared<std::vector<Epick::Point_3>>();
     for (const auto& p : P) C->emplace_back(p.x, p.y, p.z);
@@ -250,7 +212,22 @@ Run hull3d_run(const std::string& impl, const std::vector<t2::Point3>& P) {
     for (const auto& p : P) xyz->insert(xyz->end(), {p.x, p.y, p.z});
     return [xyz] { return qhull_hull(*xyz, 3); };
   }
-  throw Usage("unknown hull3d implementation " + impl);
+  return nullptr;
+}
+
+// The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
+Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
+  namespace reg = t2cli::algorithms;
+  if (const reg::Algorithm* a = reg::find(impl); a != nullptr && a->time && a->problem == problem) return a->time(in);
+  Run run;
+  if (const reg::Peer* f = reg::find_peer(impl);
+      f != nullptr && std::find(f->problems.begin(), f->problems.end(), problem) != f->problems.end())
+    run = problem == "hull"       ? hull_peer(impl, in.points)
+          : problem == "delaunay" ? delaunay_peer(impl, in.points)
+          : problem == "hull3d"   ? hull3d_peer(impl, in.points3)
+                                  : nullptr;
+  if (!run) throw Usage("no implementation " + impl + " of " + problem);
+  return run;
 }
 
 int work(int argc, char** argv) {
@@ -264,18 +241,14 @@ int work(int argc, char** argv) {
   } catch (const std::exception&) {
     throw Usage("N and SEED are non-negative integers");
   }
-  if (problem != "hull" && problem != "delaunay" && problem != "layers" && problem != "hull3d")
-    throw Usage("unknown problem " + problem + " (hull, delaunay, layers, hull3d)");
-  std::vector<t2::Point> P;  // "owned" hands it to the result
-  std::vector<t2::Point3> P3;
-  Run run;
-  if (problem == "hull3d") {
-    P3 = make_input3(input, n, seed);
-    run = hull3d_run(impl, P3);
-  } else {
-    P = make_input(input, n, seed);
-    run = problem == "hull" ? hull_run(impl, P) : problem == "layers" ? layers_run(impl, P) : delaunay_run(impl, P);
-  }
+  const t2cli::algorithms::Problem* pr = t2cli::algorithms::find_problem(problem);
+  if (pr == nullptr) throw Usage("unknown problem " + problem);
+  t2cli::algorithms::BenchInput in;  // "owned" hands its points to the result
+  if (pr->space == 3)
+    in.points3 = make_input3(input, n, seed);
+  else
+    in.points = make_input(input, n, seed);
+  const Run run = prepare(problem, impl, in);
   const long input_rss = rss_kb();
   const auto w0 = std::chrono::steady_clock::now();
   const double c0 = cpu_now();

@@ -181,8 +181,10 @@ void fig_4_15() {
 
 void fig_4_16() {
   const Point a(0, 1, 0), b(0, 1, -0.75), c(1, -1.5, -0.5), o(1, 0, 0);
-  const Sign s = t2::compare_distance(b, c, a);
-  require(s < 0, "caption 4.16: b is the nearer");
+  // The seed's rule (the angle at the origin), which the figure shows; the library's 90° rule
+  // (chapter 03, section 5) gives the same answer here.
+  const Sign s = t2::detail::compare_angles_at_origin(b, c, a);
+  require(s < 0 && t2::compare_distance(b, c, a) < 0, "caption 4.16: b is the nearer");
   dr::Figure f;
   f.segment(o, a, st(pal::light_grey).width(1));
   f.segment(o, b, st(pal::light_grey).width(1));
@@ -193,7 +195,7 @@ void fig_4_16() {
   f.add(o, lab(pal::dark_grey, "o", -100).marker(dr::Marker::square));
   f.add(a, lab(pal::black, "a", -30).size(4.5));
   f.add(b, lab(pal::green, "b: " + near_to(s, "a"), -120).size(4.5));
-  f.add(c, lab(pal::orange, "c: " + near_to(t2::compare_distance(c, b, a), "a"), 125).size(4.5));
+  f.add(c, lab(pal::orange, "c: " + near_to(t2::detail::compare_angles_at_origin(c, b, a), "a"), 125).size(4.5));
   dr::save_both(f, plane(3), sphere(35, -60), out_dir() / "fig-4-16-two-infinite-one-proper.svg");
 }
 
@@ -332,10 +334,12 @@ void check_caption_facts() {
     require(t2::compare_distance(tr(k.a), tr(b), k.c) == t2::compare_distance(k.a, b, k.c),
             "the sweep rule is invariant under translation");
   }
-  // 4.16: translating c (which fixes a and b) flips the answer.
+  // 4.16: translating c (which fixes a and b) flips the seed's answer, not the library's.
   const Point a(0, 1, 0), b(0, 1, -0.75), c(1, -1.5, -0.5), c2(1, 8, 0);
-  require(t2::compare_distance(b, c, a) < 0 && t2::compare_distance(b, c2, a) > 0,
-          "moving c to [1, 8, 0] makes it nearer to a than b");
+  require(t2::detail::compare_angles_at_origin(b, c, a) < 0 && t2::detail::compare_angles_at_origin(b, c2, a) > 0,
+          "by the seed's rule, moving c to [1, 8, 0] makes it nearer to a than b");
+  require(t2::compare_distance(b, c, a) < 0 && t2::compare_distance(b, c2, a) < 0,
+          "by the 90 degree rule, b stays the nearer wherever c is");
   // 4.17: the naive formula gives a proper point for front/back, the antipode for back/back.
   {
     const Point p0(1, -0.75, -0.5), p1(-1, -1, -0.5);
@@ -390,7 +394,9 @@ std::vector<Entry> thesis4_predicates() {
        "Two points at infinity a, b and a proper point c, distances from a: the angle aôb (along Ω) "
        "against aôc (the arc from a to c on the sphere); b is the nearer. Unlike figures 4.12 and 4.15 "
        "this is a convention of the seed, not a limit of finite distances, and it depends on the "
-       "origin: moving c to [1, 8, 0] (a translation, which fixes a and b) makes c the nearer.",
+       "origin: moving c to [1, 8, 0] (a translation, which fixes a and b) makes c the nearer. The "
+       "library does not follow it: by chapter 03's convention every proper point is 90° from a, so b "
+       "(less than 90° from a) is the nearer wherever c is.",
        fig_4_16},
       {"4.17", "fig-4-17-midpoints.svg",
        "The midpoint formula of T², m = [|w₁|w₀ + |w₀|w₁, …] (diamonds), for two front points (1), a front "

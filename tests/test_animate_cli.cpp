@@ -12,6 +12,7 @@
 #include "t2/kernel/scene.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/triangulate.hpp"
+#include "t2/triangulation/triangulate_t2.hpp"
 
 namespace t2::testing {
 namespace {
@@ -94,21 +95,21 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
   generate("both.t2", gen::Kind::both_sides, animated_points(), 3);
   generate("back.t2", gen::Kind::both_sides, animated_points(), 4, 1.0);  // every point behind
   for (const char* file : {"u.t2", "both.t2", "back.t2"})
-    for (const std::string algo : {"jarvis", "graham", "merge-hull"}) {
+    for (const std::string algo : {"jarvis", "graham", "merge"}) {
       const std::string what = algo + " " + file;
       const Result r = t2("animate " + algo + " " + file + " -o out.html");
       ASSERT_EQ(r.status, 0) << what << r.err;
       EXPECT_TRUE(has(r.out, "out.html: ")) << r.out;
       const std::string html = slurp(dir_ / "out.html");
       expect_self_contained(html, what);
-      const Result h = t2(std::string("hull ") + file + " --algorithm " + (algo == "merge-hull" ? "merge" : algo));
+      const Result h = t2(std::string("hull ") + file + " --algorithm " + algo);  // one name, one algorithm
       ASSERT_EQ(h.status, 0);
       EXPECT_TRUE(same_cycle(numbers(last_step_field(html, "chain")), numbers(h.out)))
           << what << ": " << last_step_field(html, "chain") << " vs " << h.out;
       // The merge of the points of one half (front or back) merges nothing: that half's chain is
       // the whole algorithm, shown at the lecture level (hull_recorder.hpp), and there is no
       // deeper step; on both sides the lecture level shows the two halves' hulls.
-      const bool merge = algo == "merge-hull", one_half = merge && std::string(file) != "both.t2";
+      const bool merge = algo == "merge", one_half = merge && std::string(file) != "both.t2";
       EXPECT_EQ(has(html, "\"depth\":1"), !one_half) << what << ": debugging steps";
       EXPECT_EQ(has(html, "The hull of the positive half"), merge && !one_half) << what;
       EXPECT_EQ(has(html, "The hull of the negative half"), merge && !one_half) << what;
@@ -119,18 +120,22 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
 }
 
 // The last step of each triangulation's page, decoded (animate_testing.hpp), is the library's
-// answer: `t2 animate triangulate` is what `t2 triangulate` runs (the sweep on front points).
+// answer: `t2 animate triangulate` is what `t2 triangulate` runs (the sweep on front points),
+// `t2 animate triangulate-t2` what `t2::triangulate_t2` runs.
 TEST_F(AnimateCli, TriangulationsEndWithTheTriangulation) {
   const auto P = generate("d.t2", gen::Kind::disk, animated_points(), 2);
-  for (const std::string algo : {"delaunay", "triangulate", "sweep"}) {
+  for (const std::string algo : {"delaunay", "triangulate", "triangulate-t2"}) {
     const Result r = t2("animate " + algo + " d.t2 -o " + algo + ".html");
     ASSERT_EQ(r.status, 0) << algo << r.err;
     const std::string html = slurp(dir_ / (algo + ".html"));
     expect_self_contained(html, algo);
     const auto steps = page_steps(html);
     ASSERT_FALSE(steps.empty());
-    EXPECT_EQ(steps.back().triangles, sorted_triangles(algo == "delaunay" ? delaunay(P) : triangulate(P))) << algo;
-    EXPECT_EQ(has(html, "\"kind\":\"flip\""), algo == "delaunay") << algo;
+    const Triangulation answer = algo == "delaunay"      ? delaunay(P)
+                                 : algo == "triangulate" ? triangulate(P)
+                                                         : triangulate_t2(P).tr;
+    EXPECT_EQ(steps.back().triangles, sorted_triangles(answer)) << algo;
+    EXPECT_TRUE(has(html, "\"kind\":\"flip\"")) << algo;  // these 8 disk points need flips in all three
     EXPECT_EQ(has(html, "\"kind\":\"in-circle\""), algo == "delaunay");
   }
 }
@@ -157,7 +162,7 @@ TEST_F(AnimateCli, BadInputNoHullAndTooManyPointsLeaveTheOutputAlone) {
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(has(r.err, "bad.t2:2")) << r.err;
   write("anti.t2", "1 1\n0 1\n-1 -1 -1\n");
-  for (const char* algo : {"jarvis", "graham", "merge-hull"}) {
+  for (const char* algo : {"jarvis", "graham", "merge"}) {
     r = t2(std::string("animate ") + algo + " anti.t2 -o out.html");
     EXPECT_EQ(r.status, 3) << algo;
     EXPECT_TRUE(has(r.err, "p0 and p2 are antipodal")) << r.err;
@@ -182,7 +187,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   write("line.t2", "0 0\n1 1\n2 2\n");
   write("none.t2", "# nothing\n");
   for (const char* file : {"one.t2", "line.t2", "none.t2"})
-    for (const char* algo : {"jarvis", "graham", "merge-hull", "triangulate", "sweep", "delaunay"}) {
+    for (const char* algo : {"jarvis", "graham", "merge", "triangulate", "triangulate-t2", "delaunay"}) {
       const Result r = t2(std::string("animate ") + algo + " " + file + " -o x.html");
       EXPECT_EQ(r.status, 0) << algo << " " << file << r.err;
       EXPECT_TRUE(has(slurp(dir_ / "x.html"), "\"kind\":\"answer\"")) << algo << " " << file;
@@ -196,7 +201,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
 // whose data/ is the repository's), and write their pages (some seconds of CPU in all).
 TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
   fs::create_directory_symlink(fs::path(T2_SOURCE_DIR) / "data", dir_ / "data");
-  const std::regex command("t2 animate ([a-z-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
+  const std::regex command("t2 animate ([a-z0-9-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
   int commands = 0;
   for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
     std::string md;  // the chapter's text: chapter.md, then its later parts chapter-2.md ...
@@ -209,8 +214,8 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
     int in_chapter = 0;
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
-      EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge-hull" || algo == "triangulate" ||
-                  algo == "sweep" || algo == "delaunay")
+      EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge" || algo == "triangulate" ||
+                  algo == "triangulate-t2" || algo == "delaunay")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

@@ -1,14 +1,15 @@
-// The sweep of chapter 09 animated (t2/trace/sweep_recorder.hpp, `t2 animate sweep`): the
-// recorder changes nothing in t2::triangulate; the lecture level has one step per distinct
-// point (the first triangle, each point on its first edge, each swept point's fan); after each
-// point the triangles are a triangulation of the points swept so far, checked against an
-// independent count (Euler, 2k - h - 2, with h the points on the hull's boundary by brute
-// force) and the hull so far holds exactly those boundary points; each swept point's fan is one
-// triangle more than its flips; the last step is t2 triangulate's answer.
-#include <fmt/format.h>
+// The sweep of chapter 09 animated (t2/trace/sweep_recorder.hpp, `t2 animate triangulate` on
+// front points, as `t2 triangulate` runs it): the recorder changes nothing in t2::triangulate;
+// the lecture level has one step per distinct point (the first triangle, each point on its first
+// edge, each swept point's fan); after each point the triangles are a triangulation of the
+// points swept so far, checked against an independent count (Euler, 2k - h - 2, with h the
+// points on the hull's boundary by brute force) and the hull so far holds exactly those boundary
+// points; each swept point's fan is one triangle more than its flips; the last step is t2
+// triangulate's answer, on points behind too (Algorithm 9 on T², as t2 triangulate runs it).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <span>
 #include <sstream>
@@ -119,50 +120,39 @@ TEST(SweepRecorder, NoTriangleNoStep) {
 
 class AnimateSweep : public CliTest {};
 
-// The JSON arrays `"key":[...]` of every step of a page, in order.
-std::vector<std::string> fields(const std::string& html, const std::string& key) {
-  std::vector<std::string> out;
-  for (auto at = html.find("\"" + key + "\":["); at != std::string::npos; at = html.find("\"" + key + "\":[", at + 1)) {
-    std::size_t depth = 0, k = at + key.size() + 3;
-    const std::size_t begin = k;
-    for (; k < html.size(); ++k) {
-      depth += html[k] == '[';
-      if (html[k] == ']' && --depth == 0) break;
-    }
-    out.push_back(html.substr(begin, k + 1 - begin));
-  }
-  return out;
-}
-
 TEST_F(AnimateSweep, EndsWithTheAnswerOfT2Triangulate) {
   gen::Options o;
   o.n = 8;
   o.seed = 5;
   write("d.t2", gen::to_text(gen::Kind::disk, o));
-  const Result r = t2("animate sweep d.t2 -o s.html");
+  const Result r = t2("animate triangulate d.t2 -o s.html");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(has(r.out, "s.html: ")) << r.out;
   EXPECT_TRUE(has(r.out, "(8 at the lecture level)")) << r.out;  // input, first triangle, 5 fans, answer
-  const Result tri = t2("triangulate d.t2");
-  ASSERT_EQ(tri.status, 0) << tri.err;
-  std::vector<std::vector<std::size_t>> expected;  // t2 triangulate's lines "a b c"
-  std::istringstream lines(tri.out);
-  for (std::size_t a, b, c; lines >> a >> b >> c;) expected.push_back({a, b, c});
-  std::sort(expected.begin(), expected.end());
-  std::string want = "[";
-  for (const auto& t : expected) want += (want.size() > 1 ? ",[" : "[") + fmt::format("{},{},{}]", t[0], t[1], t[2]);
-  want += "]";
+  // t2 triangulate's answer for `file` (its lines "a b c"), sorted as a page's steps hold it
+  auto answer_of = [&](const std::string& file) {
+    const Result tri = t2("triangulate " + file);
+    EXPECT_EQ(tri.status, 0) << tri.err;
+    std::vector<std::array<std::size_t, 3>> expected;
+    std::istringstream lines(tri.out);
+    for (std::size_t a, b, c; lines >> a >> b >> c;) expected.push_back({a, b, c});
+    std::sort(expected.begin(), expected.end());
+    return expected;
+  };
+  const auto want = answer_of("d.t2");
   const std::string html = slurp(dir_ / "s.html");
-  const auto triangles = fields(html, "triangles");
-  ASSERT_GE(triangles.size(), 3u);
-  EXPECT_EQ(triangles.back(), want);                        // the answer
-  EXPECT_EQ(triangles[triangles.size() - 2], want);         // and the last fan
+  const auto steps = page_steps(html);  // decoded apart from the player (animate_testing.hpp)
+  ASSERT_GE(steps.size(), 3u);
+  EXPECT_EQ(steps.back().triangles, want);                 // the answer
+  EXPECT_EQ(steps[steps.size() - 2].triangles, want);      // and the last fan
   EXPECT_TRUE(has(html, "\"kind\":\"fan\""));
   EXPECT_TRUE(has(html, "\"kind\":\"flip\""));
-  write("back.t2", "0 0\n1 0\n-1 0 -1\n");
-  const Result back = t2("animate sweep back.t2 -o b.html");
-  EXPECT_EQ(back.status, 2);
-  EXPECT_TRUE(has(back.err, "front points only")) << back.err;
+  // A point behind: t2 triangulate runs Algorithm 9 on T², and so does the animation
+  // (test_animate_t2.cpp follows it): one name, one algorithm.
+  write("back.t2", "0 0\n1 0\n2 1\n-1 0 -1\n");
+  const Result back = t2("animate triangulate back.t2 -o b.html");
+  ASSERT_EQ(back.status, 0) << back.err;
+  EXPECT_EQ(page_steps(slurp(dir_ / "b.html")).back().triangles, answer_of("back.t2"));
 }
 
 }  // namespace

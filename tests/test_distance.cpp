@@ -253,21 +253,42 @@ void angle_rule(std::uint64_t seed) {
   auto as_point = [&](const Unit& v) { const long m = k(rng); return make<P>(m * v.w, m * v.x, m * v.y); };
   int ties = 0;
   for (int i = 0; i < 3000 * scale(); ++i) {
-    // Cases: (a, b on Omega, c proper), (all on Omega), (c and a on Omega, b proper), (c and b on Omega, a proper).
+    // Cases: (a, b on Omega, c proper), (all on Omega), (c and a on Omega, b proper), (c and b on
+    // Omega, a proper). The last two are the 90-degree convention of chapter 03, section 5: the
+    // proper point counts as 90 degrees from c, where the origin is.
     const int kase = i % 4;
     const Unit a = kase == 3 ? proper[ip(rng)] : omega[io(rng)];
     const Unit b = kase == 2 ? proper[ip(rng)] : omega[io(rng)];
     const Unit c = kase == 0 ? proper[ip(rng)] : omega[io(rng)];
-    const Sign want = angle_oracle(a, b, c);
+    const Unit at_90{0, -c.y, c.x, c.len};  // a point of Omega 90 degrees from c
+    const Sign want = angle_oracle(kase == 3 ? at_90 : a, kase == 2 ? at_90 : b, c);
     ties += want == ZERO;
     ASSERT_EQ(compare_distance(as_point(a), as_point(b), as_point(c)), want) << kase;
   }
   EXPECT_GT(ties, 0);
 }
 
-TEST(CompareDistance, TwoOrThreeOnOmegaFollowTheAngleAtTheOrigin) {
+TEST(CompareDistance, TwoOrThreeOnOmegaFollowTheAngleRuleAndTheNinetyDegreeConvention) {
   angle_rule<Point>(12);
   angle_rule<ExactPoint>(13);
+}
+
+TEST(CompareDistance, AProperPointIsNinetyDegreesFromADirectionWhereverItIs) {
+  // c = [0,1,0] and a proper b = (3, -2): the seed's angle at the origin puts b about 36.7
+  // degrees from c, so it made b nearer than a = [0,1,1] (45 degrees). The convention of
+  // chapter 03 puts every proper point, on either side, at 90 degrees: a is nearer, [0,0,1] ties
+  // with b, [0,-1,1] (135 degrees) is farther.
+  const Point c(0, 1, 0);
+  for (const Point& b : {Point::cartesian(3, -2), Point(-1, 3, -2), Point(1, 0, 0), Point(-2, 1e300, 1e-300)}) {
+    EXPECT_EQ(compare_distance(Point(0, 1, 1), b, c), NEGATIVE) << to_string(b);
+    EXPECT_EQ(compare_distance(b, Point(0, 1, 1), c), POSITIVE) << to_string(b);
+    EXPECT_EQ(compare_distance(Point(0, 0, 1), b, c), ZERO) << to_string(b);
+    EXPECT_EQ(compare_distance(b, Point(0, 0, -7), c), ZERO) << to_string(b);
+    EXPECT_EQ(compare_distance(Point(0, -1, 1), b, c), POSITIVE) << to_string(b);
+    EXPECT_EQ(compare_distance(to_exact(Point(0, -1, 1)), to_exact(b), to_exact(c)), POSITIVE) << to_string(b);
+    EXPECT_EQ(compare_distance(c, b, c), NEGATIVE);     // c itself: distance zero
+    EXPECT_EQ(compare_distance(b, antipode(c), c), NEGATIVE);  // ¬c: 180 degrees
+  }
 }
 
 TEST(CompareDistance, AngleRuleWithProperCentreIsTheLimit) {

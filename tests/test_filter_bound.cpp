@@ -154,7 +154,8 @@ int side_sign(const Point& p) { return p.w() > 0 ? 1 : p.w() < 0 ? -1 : 0; }
 
 /// The rules of §4.3.1 from the pictures (distance.hpp's comment): for proper points Euclidean
 /// distances on c's side, beyond infinity across; a point of Ω is at +∞ from a proper c; c on Ω:
-/// the later point of the sweep towards c; two or three on Ω: the angle at the origin of R³.
+/// the later point of the sweep towards c; a, b on Ω or all three: the angle at the origin of R³;
+/// c and one of a, b on Ω: the other, proper, counts as 90° from c.
 /// Throws `Undefined` for c on Ω with a, b proper on opposite sides.
 Sign distance_oracle(const Point& a, const Point& b, const Point& c) {
   const int sa = side_sign(a), sb = side_sign(b), sc = side_sign(c);
@@ -164,6 +165,9 @@ Sign distance_oracle(const Point& a, const Point& b, const Point& c) {
       return Rational(q(p.w()) * q(r.w()) + q(p.x()) * q(r.x()) + q(p.y()) * q(r.y()));
     };
     const Rational da = dot(a, c), db = dot(b, c), na = dot(a, a), nb = dot(b, b);
+    // c and one of a, b on Ω: the proper one is 90° from c (chapter 03, §5), its cosine is 0.
+    if (sc == 0 && sa != 0) return static_cast<Sign>(sgn(db));
+    if (sc == 0 && sb != 0) return static_cast<Sign>(-sgn(da));
     // sign(cos a − cos b) = sign(da/√na − db/√nb): by signs first, then by squares.
     const int ga = sgn(da), gb = sgn(db);
     if (ga != gb) return ga > gb ? NEGATIVE : POSITIVE;

@@ -190,8 +190,9 @@ void incremental() {
     o.n = 100000;
     const std::vector<Point> P = t2::gen::points(t2::gen::kind_from_name(kind), o);
     std::size_t flips = 0;
+    const std::span<const Point> input(P);
     const Triangulation tr =
-        t2::delaunay_with(std::span<const Point>(P), t2::DelaunayTraits{}, Counting{&flips});
+        t2::delaunay_with(input, t2::DelaunayTraits{}, Counting{&flips});
     std::cout << kind << ": " << double(flips) / double(P.size()) << " flips per point, "
               << tr.finite_triangles().size() << " triangles\n";
   }

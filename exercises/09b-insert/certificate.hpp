@@ -3,7 +3,8 @@
 // First an exact certificate that the answer is a triangulation with the infinite vertex of the
 // vertices of T and q: every directed edge once and its reverse once, Euler's formula, every
 // finite triangle counter-clockwise, every vertex on the inner side of every hull edge, and the
-// finite triangles' areas summing exactly (rationals) to the area the hull edges enclose. Then the
+// finite triangles' areas summing exactly (rationals, in the chart of a pole of the points'
+// hemisphere) to the area the hull edges enclose. Then the
 // answer the rules of insert.hpp make unique, which the test knows, as a set of triangles.
 #include <algorithm>
 #include <array>
@@ -40,14 +41,35 @@ inline std::string name(const Tri& t) {
   return "(" + v(t[0]) + ", " + v(t[1]) + ", " + v(t[2]) + ")";
 }
 
-/// The Cartesian coordinates of a front point, exactly.
-inline std::pair<t2::Rational, t2::Rational> xy(const t2::Point& p) {
-  return {t2::to_rational(p.x()) / t2::to_rational(p.w()), t2::to_rational(p.y()) / t2::to_rational(p.w())};
+using Vec = std::array<t2::Rational, 3>;
+
+inline t2::Rational dot(const t2::Point& z, const t2::Point& p) {
+  return t2::to_rational(z.w()) * t2::to_rational(p.w()) + t2::to_rational(z.x()) * t2::to_rational(p.x()) +
+         t2::to_rational(z.y()) * t2::to_rational(p.y());
+}
+
+/// p in the chart of the pole z: p / (z·p), on the plane z·v = 1, exactly. For z = [1, 0, 0] it
+/// is (1, X, Y), the Cartesian position; in general the central projection that keeps orient.
+inline Vec chart(const t2::Point& z, const t2::Point& p) {
+  const t2::Rational s = dot(z, p);
+  return {t2::to_rational(p.w()) / s, t2::to_rational(p.x()) / s, t2::to_rational(p.y()) / s};
+}
+
+inline t2::Rational det(const Vec& a, const Vec& b, const Vec& c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
 /// "" when `out` is the triangulation `want` and passes the certificate, else what is wrong.
+/// `pole`: a point z with z·p > 0 for every point p of P (the centre of an open hemisphere that
+/// holds P); areas are compared in its chart, where det(a, b, c) is twice the area times a constant
+/// and det(o, a, b), o = z/(z·z) on the chart's plane, is the hull edge's share.
 inline std::string check(const std::vector<t2::Point>& P, const std::vector<long>& T, long q,
-                         const std::vector<long>& out, const std::vector<long>& want) {
+                         const std::vector<long>& out, const std::vector<long>& want,
+                         const t2::Point& pole = t2::Point(1, 0, 0)) {
+  for (const t2::Point& p : P)
+    if (dot(pole, p) <= 0) return "the test's pole does not hold the point " + t2::to_string(p);  // a test bug
+  const t2::Rational zz = dot(pole, pole);
+  const Vec o = {t2::to_rational(pole.w()) / zz, t2::to_rational(pole.x()) / zz, t2::to_rational(pole.y()) / zz};
   if (out.size() % 3 != 0) return "the answer's length is not a multiple of 3";
   const long n = long(P.size()), inf = ex09b::kInfinite;
   const std::vector<Tri> got = canonical(out);
@@ -66,17 +88,12 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
     if (t[0] != inf) {
       if (t2::orient(P[t[0]], P[t[1]], P[t[2]]) != t2::POSITIVE)
         return "the finite triangle " + name(t) + " is not counter-clockwise";
-      const auto [ax, ay] = xy(P[t[0]]);
-      const auto [bx, by] = xy(P[t[1]]);
-      const auto [cx, cy] = xy(P[t[2]]);
-      area += (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+      area += det(chart(pole, P[t[0]]), chart(pole, P[t[1]]), chart(pole, P[t[2]]));
       continue;
     }
     const long a = t[2], b = t[1];  // (inf, b, a): the hull edge a -> b
     hull_edges.push_back({a, b});
-    const auto [ax, ay] = xy(P[a]);
-    const auto [bx, by] = xy(P[b]);
-    hull += ax * by - ay * bx;
+    hull += det(o, chart(pole, P[a]), chart(pole, P[b]));
   }
   for (const auto& [a, b] : hull_edges)
     for (long v : V)

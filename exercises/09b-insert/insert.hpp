@@ -9,8 +9,10 @@ namespace ex09b {
 /// The infinite vertex v∞ in a triangle list.
 inline constexpr long kInfinite = -1;
 
-/// Inserts P[q] into the triangulation T (chapter 09, section 3, Algorithm 9). P: front points
-/// (w > 0, not necessarily 1). T: a triangulation with the infinite vertex of the points of P
+/// Inserts P[q] into the triangulation T (chapter 09, section 3, Algorithm 9). P: points of T²
+/// in one open hemisphere (a set with a hull: front points with any w > 0, but also back points
+/// and points of Ω, when some line has them all strictly on one side; chapter 09, section 6).
+/// T: a triangulation with the infinite vertex of the points of P
 /// other than q — a flat list, three indices per triangle, each finite triangle
 /// counter-clockwise (t2::orient > 0), and for each hull edge a -> b (counter-clockwise around
 /// the hull) the infinite triangle (b, a, kInfinite) — so that every directed edge occurs once

@@ -144,7 +144,7 @@ TEST_F(PlayerInChromium, DelaunayEndsWithTheLibrarysTriangulation) {
 TEST_F(PlayerInChromium, SweepEndsWithTheSweepsTriangulation) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
   T2_NEEDS_CHROMIUM();
-  const auto P = make("sweep", gen::Kind::disk, 9);
+  const auto P = make("triangulate", gen::Kind::disk, 9);
   auto tris = triangulate(P).finite_triangles();
   std::sort(tris.begin(), tris.end());
   std::vector<std::size_t> expected;
@@ -179,7 +179,7 @@ TEST_F(PlayerInChromium, JarvisEndsWithTheMarchsHull) {
 TEST_F(PlayerInChromium, MergeHullShowsBothHalvesThenEndsWithTheMerge) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
   T2_NEEDS_CHROMIUM();
-  const auto P = make("merge-hull", gen::Kind::both_sides, 12);
+  const auto P = make("merge", gen::Kind::both_sides, 12);
   const Shown positive = load("click=next");
   EXPECT_EQ(positive.pos, 1);
   EXPECT_TRUE(has(positive.explanation, "The hull of the positive half")) << positive.explanation;
@@ -194,13 +194,13 @@ TEST_F(PlayerInChromium, MergeHullShowsBothHalvesThenEndsWithTheMerge) {
   EXPECT_NE(before.view, last.view);
 }
 
-// The incremental triangulation: the last step is a triangulation of the points, checked
-// exactly: every triangle counter-clockwise, 2n - h - 2 of them, every point a vertex, and
-// their areas adding up to the hull's.
-TEST_F(PlayerInChromium, TriangulateEndsWithATriangulationOfThePoints) {
+// Algorithm 9 (triangulate-t2, insertion in spatial order): the last step is a triangulation of
+// the points, checked exactly: every triangle counter-clockwise, 2n - h - 2 of them, every point
+// a vertex, and their areas adding up to the hull's.
+TEST_F(PlayerInChromium, TriangulateT2EndsWithATriangulationOfThePoints) {
   if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "the browser tests do not run under sanitizers";
   T2_NEEDS_CHROMIUM();
-  const auto P = make("triangulate", gen::Kind::uniform, 12);
+  const auto P = make("triangulate-t2", gen::Kind::uniform, 12);
   const Shown last = load("step=last");
   const auto v = numbers(last.triangles);
   const auto hull = convex_hull(P);

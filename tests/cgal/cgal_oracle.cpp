@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/convex_hull_3.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 #include "oracle.hpp"
@@ -112,6 +114,26 @@ std::vector<Triangle3> hull_3(const std::vector<Point3>& P) {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::vector<std::array<Rational, 2>> intersection_points_2(const std::vector<Segment>& segments) {
+  std::vector<Epeck::Segment_2> in;
+  in.reserve(segments.size());
+  for (const Segment& s : segments) in.emplace_back(exact(s.source()), exact(s.target()));
+  std::vector<Epeck::Point_2> out;
+  CGAL::compute_intersection_points(in.begin(), in.end(), std::back_inserter(out), false);
+  auto rational = [](const Epeck::FT& v) {
+    std::ostringstream os;
+    os << CGAL::exact(v);  // "n" or "n/d", whichever exact number type CGAL was built with
+    Rational r(os.str());
+    r.canonicalize();
+    return r;
+  };
+  std::vector<std::array<Rational, 2>> pts;
+  for (const auto& p : out) pts.push_back({rational(p.x()), rational(p.y())});
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  return pts;
 }
 
 }  // namespace t2::testing::cgal

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "t2/hull3d/facets.hpp"
+#include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/kernel/segment.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2::testing::cgal {
@@ -34,5 +36,10 @@ std::vector<std::array<Triangulation::Index, 3>> delaunay_triangles(
 /// indices, each rotated to start at its smallest index, sorted. Throws std::runtime_error if a
 /// face is not a triangle.
 std::vector<Triangle3> hull_3(const std::vector<Point3>& P);
+
+/// CGAL::compute_intersection_points (the surface sweep, report_endpoints = false) of front
+/// segments with the exact kernel (Epeck, each endpoint (x/w, y/w) as exact rationals): the
+/// points where segments meet, as exact Cartesian (X, Y), sorted, each once.
+std::vector<std::array<Rational, 2>> intersection_points_2(const std::vector<Segment>& segments);
 
 }  // namespace t2::testing::cgal

@@ -1,4 +1,4 @@
-// What `t2 bench` can measure and one run of its worker: see bench_run.hpp.
+// One run of the worker of `t2 bench`: see bench_run.hpp.
 #include "bench_run.hpp"
 
 #include <unistd.h>
@@ -10,50 +10,6 @@
 #include "process.hpp"
 
 namespace t2bench {
-
-const std::vector<Impl>& impls() {
-  static const std::vector<Impl> all = {
-      {"hull", "hull", "t2", "t2::convex_hull (Akl-Toussaint + monotone chain on front input)", true},
-      {"graham", "hull", "graham", "t2's Graham scan, O(n log n)", true},
-      {"jarvis", "hull", "jarvis", "t2's Jarvis march, O(nh)", true},
-      {"monotone", "hull", "monotone", "t2's Andrew monotone chain, O(n log n)", true},
-      {"quickhull", "hull", "quickhull", "t2's Quickhull", true},
-      {"merge", "hull", "merge", "t2's hemisphere merge (seed 000, Algorithm 4)", true},
-      {"layers", "layers", "jarvis", "t2::convex_layers by Jarvis's march on what is left (seed 003), O(n^2)", true},
-      {"layers-graham", "layers", "graham", "t2::convex_layers by Graham's scan on what is left, O(n^2 log n)", true},
-      {"delaunay", "delaunay", "t2", "t2::delaunay (filtered exact predicates)", true},
-      {"owned", "delaunay", "owned", "t2::delaunay(std::move(points)): the result takes the input vector (one copy of the points)", true},
-      {"divide", "delaunay", "divide", "t2::delaunay_divide (Guibas-Stolfi divide and conquer, quad-edge)", true},
-      {"hull3d", "hull3d", "quickhull", "t2::convex_hull_3d (R^3; quickhull: farthest point first)", true},
-      {"incremental", "hull3d", "incremental", "t2's randomized incremental 3-D hull (conflict lists)", true},
-      {"gift-wrap", "hull3d", "gift-wrap", "t2's 3-D gift wrapping, O(n) per hull edge", true},
-      {"cgal", "hull,delaunay,hull3d", "cgal",
-       "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay), convex_hull_3 (hull3d)", true},
-      {"qhull", "hull,hull3d", "qhull", "qhull (libqhull_r, default options: merges nearly coplanar facets)", false},
-      {"raw", "hull,delaunay", "raw", "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false},
-      {"exact", "hull,delaunay", "exact", "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true},
-  };
-  return all;
-}
-
-const Impl* find_impl(const std::string& name) {
-  for (const auto& i : impls())
-    if (name == i.name) return &i;
-  return nullptr;
-}
-
-std::vector<std::string> algorithm_names() {
-  return {"hull", "graham", "jarvis", "monotone", "quickhull", "merge", "layers", "delaunay", "hull3d"};
-}
-
-std::vector<std::string> default_peers(const std::string& algo) {
-  if (algo == "hull") return {"cgal", "qhull"};
-  if (algo == "delaunay") return {"divide", "cgal"};
-  if (algo == "graham") return {"jarvis"};
-  if (algo == "layers") return {"layers-graham"};
-  if (algo == "hull3d") return {"cgal", "qhull"};
-  return {};
-}
 
 const std::vector<std::string>& input_names() {
   static const std::vector<std::string> names = {"uniform",  "disk",     "polygon-interior", "normal",
@@ -105,17 +61,17 @@ Measurement parse_worker_line(const std::string& line) {
   return m;
 }
 
-Measurement measure(const std::filesystem::path& worker, const std::string& problem, const Impl& impl,
+Measurement measure(const std::filesystem::path& worker, const std::string& problem, const std::string& impl,
                     const std::string& input, std::size_t n, std::uint64_t seed) {
   t2proc::Spec s;
-  s.argv = {worker.string(), problem, impl.worker, input, std::to_string(n), std::to_string(seed)};
+  s.argv = {worker.string(), problem, impl, input, std::to_string(n), std::to_string(seed)};
   s.limits.output_bytes = 1 << 16;
   const t2proc::Result r = t2proc::run(s);
   if (!r.ok()) {
     std::string why = !r.started ? r.error
                       : r.signal ? "killed by signal " + std::to_string(r.signal)
                                  : "exit status " + std::to_string(r.exit_code);
-    throw std::runtime_error(std::string(impl.name) + " on " + std::to_string(n) + " points of " + input +
+    throw std::runtime_error(impl + " on " + std::to_string(n) + " points of " + input +
                              " failed (" + why + ")" + (r.err.empty() ? "" : ": " + r.err));
   }
   Measurement m = parse_worker_line(r.out);

@@ -1,7 +1,8 @@
 #pragma once
-// What `t2 bench` can measure and how one measurement runs (cmd_bench.cpp): the algorithms and
-// their peers, the inputs, and one run of the benchmark worker (bench/t2_bench_worker.cpp, which
-// links CGAL and qhull; the t2 tool never does) in a fresh child process.
+// How one measurement of `t2 bench` runs (cmd_bench.cpp): the inputs, and one run of the
+// benchmark worker (bench/t2_bench_worker.cpp, which links CGAL and qhull; the t2 tool never
+// does) in a fresh child process. What can be measured, the algorithms and their peers, is the
+// registry's (tools/t2/algorithms/registry.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -12,24 +13,6 @@
 
 namespace t2bench {
 
-/// An implementation that `t2 bench` can time.
-struct Impl {
-  const char* name;     ///< its name on the command line and in the table
-  const char* problem;  ///< what it computes: "hull", "layers", "delaunay", "hull3d", or a list ("hull,delaunay")
-  const char* worker;   ///< its name for the worker
-  const char* what;     ///< one line for the help
-  bool exact;           ///< exact predicates: its answer must equal the algorithm's
-};
-
-/// Every implementation, algorithms of t2 first.
-const std::vector<Impl>& impls();
-/// The implementation of a name, or nullptr.
-const Impl* find_impl(const std::string& name);
-/// The names ALGO accepts (the t2 algorithms).
-std::vector<std::string> algorithm_names();
-/// The peers measured when `--vs` is not given (hull and hull3d: cgal, qhull; delaunay: divide,
-/// cgal; graham: jarvis; layers: layers-graham).
-std::vector<std::string> default_peers(const std::string& algo);
 /// The inputs (t2 gen kinds with front points, and clustered; cube and sphere for hull3d).
 const std::vector<std::string>& input_names();
 /// True for the inputs of R³ (cube, sphere), the only ones of hull3d.
@@ -48,9 +31,10 @@ struct Measurement {
 /// tree t2 was built in; nullopt when none exists (the caller says how to build it).
 std::optional<std::filesystem::path> find_worker();
 
-/// Runs the worker once: `impl` solving `problem` ("hull", "delaunay") on n points of `input`
-/// made with `seed`. Throws std::runtime_error with the worker's message when it fails.
-Measurement measure(const std::filesystem::path& worker, const std::string& problem, const Impl& impl,
+/// Runs the worker once: the implementation named `impl` (a registered algorithm or peer)
+/// solving `problem` ("hull", "delaunay") on n points of `input` made with `seed`. Throws
+/// std::runtime_error with the worker's message when it fails.
+Measurement measure(const std::filesystem::path& worker, const std::string& problem, const std::string& impl,
                     const std::string& input, std::size_t n, std::uint64_t seed);
 
 /// Parses the worker's line "size=S wall=W cpu=C input_rss_kb=R"; throws std::runtime_error.

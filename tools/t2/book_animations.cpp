@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "algorithms/registry.hpp"
 #include "animate/run.hpp"
 #include "t2/kernel/io.hpp"
 #include "t2/kernel/scene.hpp"
@@ -16,10 +17,10 @@ namespace t2cli::book {
 
 namespace {
 
+// An algorithm of t2 animate: registered with a recorder (algorithms/registry.hpp).
 bool known_algorithm(const std::string& algo) {
-  for (const auto& a : animate::algorithms())
-    if (algo == a.name) return true;
-  return false;
+  const algorithms::Algorithm* a = algorithms::find(algo);
+  return a != nullptr && a->record;
 }
 
 // One command found at `where`: an animation, or a problem.

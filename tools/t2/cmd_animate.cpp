@@ -5,7 +5,9 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "algorithms/registry.hpp"
 #include "animate/run.hpp"
 #include "command.hpp"
 #include "scene_argument.hpp"
@@ -24,6 +26,13 @@ int animate(const Options& o) {
   return kOk;
 }
 
+// "  NAME  summary" for each algorithm t2 animate shows.
+std::string algo_list() {
+  std::string s;
+  for (const auto* a : algorithms::animated()) s += fmt::format("  {:<15} {}\n", a->name, a->summary);
+  return s;
+}
+
 Action setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.description(
@@ -35,28 +44,24 @@ Action setup(CLI::App& app) {
       "timeline, and the level of detail (lecture: the steps that change the structure;\n"
       "debugging: every test as well). The page starts paused at the first step; its URL\n"
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
-      "ALGO: jarvis, graham, merge-hull (hulls of points of T2), triangulate (incremental\n"
-      "insertion in spatial order, flips only where the new point sees hull edges; on input\n"
-      "with points behind or on Omega, Algorithm 9 on T2 as t2 triangulate runs it: one step\n"
-      "per point, the faces where it takes the place of v-infinity when the hull goes), sweep\n"
-      "(the sweep of t2 triangulate, chapter 09: the points in (x, y) order, each joined to\n"
-      "the hull edges it sees; lecture: one step per point, its new fan; debugging: each\n"
-      "flip of step 35 too), delaunay (the insertion with Lawson flips: the library's\n"
-      "randomized incremental Delaunay). sweep and delaunay are animated for front points\n"
-      "only.");
-  app.add_option("ALGO", o->algo, "jarvis, graham, merge-hull, triangulate, sweep or delaunay")
+      "ALGO (each name means one algorithm everywhere in t2: t2 hull --algorithm, t2 bench,\n"
+      "t2 triangulate):\n" +
+      algo_list());
+  std::vector<std::string> names;
+  for (const auto* a : algorithms::animated()) names.push_back(a->name);
+  app.add_option("ALGO", o->algo, algorithms::words(names))
       ->required()
       ->check([](const std::string& a) {
-        for (const auto& x : animate::algorithms())
-          if (a == x.name) return std::string();
-        return fmt::format("'{}': not an algorithm of t2 animate", a);
+        const algorithms::Algorithm* x = algorithms::find(a);
+        return x != nullptr && x->record ? std::string()
+                                         : fmt::format("'{}': not an algorithm of t2 animate", a);
       });
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_option("-o,--output", o->out, "the HTML page to write (atomically)")->required()->type_name("OUT");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
-      "points; sweep or delaunay of points off the front side); 3 undefined: the points have\n"
-      "no hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
+      "points; delaunay given points off the front side); 3 undefined: the points have no hull\n"
+      "(no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
   return [o] { return animate(*o); };
 }
 

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "algorithms/registry.hpp"
 #include "bench_plot.hpp"
 #include "bench_progress.hpp"
 #include "bench_run.hpp"
@@ -43,6 +44,12 @@ struct Options {
   std::uint64_t seed = 1;
 };
 
+// An implementation to time: a registered t2 algorithm or peer (algorithms/registry.hpp).
+struct Impl {
+  std::string name;
+  bool exact = true;  ///< exact predicates: its answer must equal the algorithm's
+};
+
 // The medians of the repeats of one implementation at one size.
 struct Row {
   const Impl* impl;
@@ -50,25 +57,33 @@ struct Row {
   double wall = 0, cpu = 0, peak_kb = 0, input_kb = 0;
 };
 
+std::vector<std::string> timed_names() {
+  std::vector<std::string> names;
+  for (const auto* a : algorithms::timed()) names.push_back(a->name);
+  return names;
+}
+
 // The implementations to run, the algorithm first; throws UsageError.
-std::vector<const Impl*> chosen(const Options& o) {
-  const auto names = algorithm_names();
-  if (std::find(names.begin(), names.end(), o.algo) == names.end())
-    throw UsageError(fmt::format("unknown algorithm '{}' (one of: {})", o.algo, fmt::join(names, ", ")));
-  const Impl* algo = find_impl(o.algo);
-  std::vector<const Impl*> out{algo};
-  std::vector<std::string> peers = o.vs.empty() ? default_peers(o.algo) : o.vs;
+std::vector<Impl> chosen(const Options& o, const algorithms::Algorithm*& algo) {
+  algo = algorithms::find(o.algo);
+  if (algo == nullptr || !algo->time)
+    throw UsageError(fmt::format("unknown algorithm '{}' (one of: {})", o.algo, fmt::join(timed_names(), ", ")));
+  std::vector<Impl> out{{algo->name, true}};
+  std::vector<std::string> peers = o.vs.empty() ? algo->peers : o.vs;
   if (peers.size() == 1 && peers[0] == "none") peers.clear();
   for (const auto& p : peers) {
-    const Impl* i = find_impl(p);
-    bool serves = false;  // the peer's problem list ("hull,delaunay") names ALGO's problem
-    std::istringstream list(i == nullptr ? "" : i->problem);
-    for (std::string item; std::getline(list, item, ',');) serves |= item == algo->problem;
-    if (i == nullptr || i == algo || !serves)
+    const algorithms::Algorithm* a = algorithms::find(p);
+    const algorithms::Peer* f = algorithms::find_peer(p);
+    const bool serves = (a != nullptr && a->time && a->problem == algo->problem) ||
+                        (f != nullptr && std::find(f->problems.begin(), f->problems.end(), algo->problem) !=
+                                             f->problems.end());
+    if (!serves || p == algo->name)
       throw UsageError(fmt::format("--vs {}: not a peer of {} (peers: see t2 help bench)", p, o.algo));
-    if ((p == "raw" || p == "exact") && o.algo != "hull" && o.algo != "delaunay")
-      throw UsageError(fmt::format("--vs {}: the kernels are compared on hull and delaunay only", p));
-    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+    if (f != nullptr && f->same_code && algo->name != algo->problem)
+      throw UsageError(fmt::format("--vs {}: swaps the predicates of t2 bench {} only (the problem's own algorithm)",
+                                   p, algo->problem));
+    if (std::none_of(out.begin(), out.end(), [&](const Impl& i) { return i.name == p; }))
+      out.push_back({p, f == nullptr || f->exact});
   }
   return out;
 }
@@ -90,9 +105,11 @@ double load_average() {
 }
 
 // The runs, with the progress line on stderr (erased before this returns, so before the table).
-std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, const std::vector<std::size_t>& ns,
-                         const std::filesystem::path& worker, Progress::Setting shown) {
-  const std::string problem = run[0]->problem;
+std::vector<Row> run_all(const Options& o, const std::string& problem, const std::vector<Impl>& impls,
+                         const std::vector<std::size_t>& ns, const std::filesystem::path& worker,
+                         Progress::Setting shown) {
+  std::vector<const Impl*> run;
+  for (const Impl& i : impls) run.push_back(&i);
   Progress progress(ns.size() * run.size() * std::size_t(o.repeat), shown.tick, shown.shown);
   std::size_t k = 0;
   std::vector<Row> rows;
@@ -101,7 +118,7 @@ std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, 
     for (int r = 0; r < o.repeat; ++r)  // repeats interleaved: a burst of load hits every peer
       for (const Impl* i : run) {
         progress.start(++k, i->name, n);
-        got[i].push_back(measure(worker, problem, *i, o.input, n, o.seed));
+        got[i].push_back(measure(worker, problem, i->name, o.input, n, o.seed));
       }
     for (const Impl* i : run) {
       const auto& ms = got[i];
@@ -123,13 +140,15 @@ std::vector<Row> run_all(const Options& o, const std::vector<const Impl*>& run, 
   return rows;
 }
 
-const char* size_word(const std::string& problem) {
-  return problem == "hull" || problem == "hull3d" ? "vertices" : problem == "layers" ? "layers" : "triangles";
-}
-
 int bench(Options o) {
-  const std::vector<const Impl*> run = chosen(o);
-  const bool space = std::string_view(run[0]->problem) == "hull3d";
+  const algorithms::Algorithm* algo = nullptr;
+  const std::vector<Impl> impls = chosen(o, algo);
+  std::vector<const Impl*> run;
+  for (const Impl& i : impls) run.push_back(&i);
+  const std::string problem = algo->problem;
+  const algorithms::Problem* pr = algorithms::find_problem(problem);
+  if (pr == nullptr) throw std::logic_error("t2 bench " + o.algo + ": its problem " + problem + " is not registered");
+  const bool space = pr->space == 3;
   if (o.input.empty()) o.input = space ? "cube" : "uniform";
   const auto& inputs = input_names();
   if (std::find(inputs.begin(), inputs.end(), o.input) == inputs.end())
@@ -156,12 +175,11 @@ int bench(Options o) {
   }
   std::vector<Row> rows;
   try {
-    rows = run_all(o, run, ns, *worker, shown);
+    rows = run_all(o, problem, impls, ns, *worker, shown);
   } catch (const std::runtime_error& e) {
     fmt::print(stderr, "t2 bench: {}\n", e.what());
     return kFailed;
   }
-  const std::string problem = run[0]->problem;
   // The table: medians of the repeats; ratio = the algorithm's CPU time / this row's.
   fmt::print("# t2 bench {} --input {} --seed {}: medians of {} run(s) each, every run in its own process; "
              "load average {:.1f} on {} cores when it started\n",
@@ -179,7 +197,7 @@ int bench(Options o) {
     const Row& ref = *std::find_if(rows.begin(), rows.end(), [&](const Row& x) { return x.n == r.n && x.impl == run[0]; });
     std::string agrees = r.impl == run[0] ? "-" : r.size == ref.size ? "yes" : r.impl->exact ? "NO" : "differs (inexact)";
     if (r.size != ref.size) {
-      const std::string what = fmt::format("n = {}: {} has {} {}, {} has {}", r.n, o.algo, ref.size, size_word(problem),
+      const std::string what = fmt::format("n = {}: {} has {} {}, {} has {}", r.n, o.algo, ref.size, pr->size_word,
                                            r.impl->name, r.size);
       (r.impl->exact ? disagreements : notes).push_back(what);
     }
@@ -209,14 +227,24 @@ int bench(Options o) {
   return disagreements.empty() ? kOk : kFailed;
 }
 
+// The registry's algorithms and peers, by problem, and the default peers.
 std::string catalogue() {
-  std::string s = "Algorithms (ALGO) and peers (--vs):\n";
-  for (const auto& i : impls()) s += fmt::format("  {:<13} {}\n", i.name, i.what);
+  std::string s = "Algorithms (ALGO; each is also a peer of the others of its problem) and peers (--vs):\n";
+  std::vector<std::string> defaults;
+  for (const auto& pr : algorithms::problems()) {
+    s += fmt::format(" {} ({} input; size: {}):\n", pr.name, pr.space == 3 ? "R^3" : "T2", pr.size_word);
+    for (const auto* a : algorithms::timed())
+      if (a->problem == pr.name) {
+        s += fmt::format("  {:<15} {}\n", a->name, a->summary);
+        if (!a->peers.empty()) defaults.push_back(fmt::format("{} --vs {}", a->name, fmt::join(a->peers, ",")));
+      }
+    for (const auto& f : algorithms::peers())
+      if (std::find(f.problems.begin(), f.problems.end(), pr.name) != f.problems.end())
+        s += fmt::format("  {:<15} {}{}\n", f.name, f.summary, f.same_code ? fmt::format(" (t2 bench {} only)", pr.name) : "");
+  }
   s += fmt::format("Inputs (--input, from t2 gen; normal = one cluster, clustered = 64): {}\n",
                    fmt::join(input_names(), ", "));
-  s += "Default peers: hull --vs cgal,qhull; delaunay --vs divide,cgal; graham --vs jarvis; layers --vs layers-graham;\n"
-       "hull3d --vs cgal,qhull (on cube or sphere, the default cube; its t2 peers: incremental, gift-wrap);\n"
-       "--vs none for ALGO alone.\n";
+  s += fmt::format("Default peers: {}; --vs none for ALGO alone.\n", fmt::join(defaults, "; "));
   return s;
 }
 
@@ -230,9 +258,7 @@ Action setup(CLI::App& app) {
       "Examples: t2 bench hull --n 10000000; t2 bench delaunay --input grid --repeat 3;\n"
       "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
       "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness; hull too).");
-  app.add_option("ALGO", o->algo,
-                 "the t2 algorithm: hull, graham, jarvis, monotone, quickhull, merge, layers, delaunay, hull3d")
-      ->required();
+  app.add_option("ALGO", o->algo, "the t2 algorithm: " + algorithms::words(timed_names()))->required();
   app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
   app.add_option("--range", o->range, "sizes from N1 to N2 in logarithmic steps")->type_name("N1..N2");
   app.add_option("--per-decade", o->per_decade, "steps of --range per factor 10 (default 2)")

@@ -28,8 +28,7 @@ struct Options {
 };
 
 t2::HullAlgorithm algorithm_of(const std::string& s) {
-  for (auto a : {t2::HullAlgorithm::automatic, t2::HullAlgorithm::merge, t2::HullAlgorithm::jarvis,
-                 t2::HullAlgorithm::graham, t2::HullAlgorithm::quickhull, t2::HullAlgorithm::monotone})
+  for (auto a : t2::hull_algorithms)
     if (s == t2::name(a)) return a;
   throw UsageError(fmt::format("unknown algorithm '{}'", s));
 }
@@ -84,7 +83,7 @@ Action setup(CLI::App& app) {
                  "automatic (default: Akl-Toussaint + monotone chain on front-only input, else\n"
                  "merge), merge, jarvis, graham, quickhull or monotone")
       ->type_name("A")
-      ->check(CLI::IsMember({"automatic", "merge", "jarvis", "graham", "quickhull", "monotone"}));
+      ->check(CLI::IsMember(names_of(t2::hull_algorithms)));
   add_drawing_options(app, o->drawing, "the points and the hull");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"

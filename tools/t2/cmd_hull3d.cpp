@@ -56,7 +56,7 @@ std::vector<t2::Point3> read_points3(const std::string& file) {
 
 int hull3d(const Options& o) {
   t2::Hull3dAlgorithm a = t2::Hull3dAlgorithm::quickhull;
-  for (auto b : {t2::Hull3dAlgorithm::incremental, t2::Hull3dAlgorithm::quickhull, t2::Hull3dAlgorithm::gift_wrap})
+  for (auto b : t2::hull3d_algorithms)
     if (o.algorithm == t2::name(b)) a = b;
   const std::vector<t2::Point3> P = read_points3(o.file);
   const t2::Facets F = t2::hull_facets_3d(P, a);
@@ -92,7 +92,7 @@ Action setup(CLI::App& app) {
   app.add_option("FILE", o->file, "the points, - for standard input")->required();
   app.add_option("--algorithm", o->algorithm, "quickhull (default), incremental (random order) or gift-wrap")
       ->type_name("A")
-      ->check(CLI::IsMember({"quickhull", "incremental", "gift-wrap"}));
+      ->check(CLI::IsMember(names_of(t2::hull3d_algorithms)));
   app.add_flag("--facets", o->facets, "print the facets instead: one polygon per line, counter-clockwise from outside");
   app.add_option("--svg", o->svg, "also draw the hull and the points to OUT (.svg, .png or .pdf, atomically)")
       ->type_name("OUT");

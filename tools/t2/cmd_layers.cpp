@@ -51,7 +51,8 @@ int layers(const Options& o) {
   const std::vector<t2::Point> P = scene_points(scene);
   std::vector<std::vector<std::size_t>> L;
   try {
-    L = t2::convex_layers(P, o.method == "graham" ? t2::LayersMethod::graham : t2::LayersMethod::jarvis);
+    L = t2::convex_layers(P, o.method == t2::name(t2::LayersMethod::graham) ? t2::LayersMethod::graham
+                                                                            : t2::LayersMethod::jarvis);
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex layers: {}", scene.name, e.what()));
   }
@@ -80,7 +81,7 @@ Action setup(CLI::App& app) {
                  "jarvis (default: repeated Jarvis marches, O(n^2)) or graham (repeated Graham\n"
                  "scans, O(n^2 log n)): the two ways of seed 003, with the same answer")
       ->type_name("M")
-      ->check(CLI::IsMember({"jarvis", "graham"}));
+      ->check(CLI::IsMember(names_of(t2::layers_methods)));
   add_drawing_options(app, o->drawing, "the points and the layers");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"

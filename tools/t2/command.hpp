@@ -73,6 +73,15 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The names of a library enum's published list (t2::hull_algorithms, t2::layers_methods...),
+/// each by its `name` overload: a command's choices come from the library, never a copy.
+template <class Values>
+std::vector<std::string> names_of(const Values& values) {
+  std::vector<std::string> names;
+  for (auto v : values) names.emplace_back(name(v));
+  return names;
+}
+
 void register_command(const Command& c);
 const std::vector<Command>& commands();
 const Command* find_command(const std::string& name);

@@ -3,7 +3,8 @@
 // computed here by brute force. Each test grows a triangulation point by point with those rules
 // and asks for every insertion: random points in random order (outside the hull, often), a
 // shuffled integer grid with copies (points on edges, on hull edges, on the lines of hull
-// edges, equal points), random weights w, and points rounded onto edges.
+// edges, equal points), random weights w, points rounded onto edges, and points of an open
+// hemisphere that is not the front (back points and points of Ω).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,8 +77,8 @@ std::vector<long> rule(const std::vector<Point>& P, const std::vector<long>& T, 
 }
 
 // Grows a triangulation of P in the order given (the first three not collinear), checking
-// the answer of every insertion.
-void grow(const std::vector<Point>& P) {
+// the answer of every insertion; `pole` holds P in its open hemisphere (certificate.hpp).
+void grow(const std::vector<Point>& P, const Point& pole = Point(1, 0, 0)) {
   std::size_t k = 2;
   while (t2::orient(P[0], P[1], P[k]) == t2::ZERO) ++k;
   std::vector<long> T = t2::orient(P[0], P[1], P[k]) > 0
@@ -86,7 +87,7 @@ void grow(const std::vector<Point>& P) {
   for (long q = 2; q < long(P.size()); ++q) {
     if (q == long(k)) continue;
     const std::vector<long> want = rule(P, T, q);
-    EXPECT_EQ(ex09btest::check(P, T, q, ex09b::insert(P, T, q), want), "") << "inserting point " << q;
+    EXPECT_EQ(ex09btest::check(P, T, q, ex09b::insert(P, T, q), want, pole), "") << "inserting point " << q;
     T = want;
   }
 }
@@ -120,6 +121,25 @@ TEST(Hidden, Homogeneous) {
     P.push_back(Point(s, s * std::floor(16 * unit(g)), s * std::floor(16 * unit(g))));
   }
   grow(P);
+}
+
+// Points of T² in the open hemisphere x > 0 (pole [0, 1, 0]): front, back (w < 0) and on Ω
+// (w = 0), some with a copy scaled by 3 (equal in T²). A back point [w, x, y] is drawn at
+// (x/w, y/w), where its antipode is: a solution that orients drawn positions gets every
+// triangle with an odd number of back vertices backwards.
+TEST(Hidden, Hemisphere) {
+  std::mt19937_64 g(909);
+  std::vector<Point> P;
+  for (int k = 0; k < 40; ++k) {
+    const double w = double(long(g() % 13) - 6), x = double(1 + g() % 16), y = double(long(g() % 33) - 16);
+    P.push_back(Point(w, x, y));
+    if (k % 8 == 7) P.push_back(Point(3 * w, 3 * x, 3 * y));
+  }
+  long back = 0, omega = 0;
+  for (const Point& p : P) back += p.w() < 0, omega += p.w() == 0;
+  ASSERT_GE(back, 10);
+  ASSERT_GE(omega, 2);
+  grow(P, Point(0, 1, 0));
 }
 
 // Points a + t(b − a), rounded to doubles, on the edges of a triangulation of random points:

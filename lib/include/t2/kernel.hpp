@@ -12,6 +12,7 @@
 #include "t2/kernel/t1.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/predicates.hpp"
+#include "t2/kernel/chart.hpp"
 #include "t2/kernel/constructions.hpp"
 #include "t2/kernel/segment.hpp"
 #include "t2/kernel/ray.hpp"

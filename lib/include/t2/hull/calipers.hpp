@@ -47,18 +47,6 @@ inline Sign turn_of_directions(const Point& a, const Point& b, const Point& c, c
       a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
 }
 
-// |A − B|² compared with |C − D|² (all front): NEGATIVE when a, b are the nearer pair.
-inline Sign compare_pair_distances(const Point& a, const Point& b, const Point& c, const Point& d) {
-  return sign_of_poly(
-      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
-         const auto& cw, const auto& cx, const auto& cy, const auto& dw, const auto& dx, const auto& dy) {
-        const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
-        const auto vx = dx * cw - cx * dw, vy = dy * cw - cy * dw;
-        return (ux * ux + uy * uy) * (cw * dw) * (cw * dw) - (vx * vx + vy * vy) * (aw * bw) * (aw * bw);
-      },
-      a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
-}
-
 // The two parts of compare_line_distances' polynomial, at namespace scope so that the
 // polynomial, a lambda without captures (filter.hpp), can call them.
 inline constexpr auto line_distance_term = [](const auto& aw, const auto& ax, const auto& ay, const auto& bw,
@@ -188,5 +176,12 @@ std::optional<Width> width(std::span<const Point> P) {
                    });
   return Width{at[best->first], at[(best->first + 1) % h], at[best->second]};
 }
+
+// The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::optional<Width> width<HullTraits>(std::span<const Point>);
+/// @endcond
+#endif
 
 }  // namespace t2

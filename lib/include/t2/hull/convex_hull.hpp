@@ -27,6 +27,12 @@ enum class HullAlgorithm {
   monotone,   ///< Andrew's monotone chain, O(n log n)
 };
 
+/// Every hull algorithm, in the order of `t2 hull --help`: the list the command line's choices
+/// come from (with `name`).
+inline constexpr HullAlgorithm hull_algorithms[] = {HullAlgorithm::automatic, HullAlgorithm::merge,
+                                                    HullAlgorithm::jarvis,    HullAlgorithm::graham,
+                                                    HullAlgorithm::quickhull, HullAlgorithm::monotone};
+
 /// The name of an algorithm ("merge", "jarvis", ...), as `t2 hull --algorithm` takes it.
 inline std::string_view name(HullAlgorithm a) {
   switch (a) {
@@ -84,5 +90,15 @@ bool has_hull(std::span<const Point> P) {
     return false;
   }
 }
+
+// The default instantiations are compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::vector<std::size_t> convex_hull<HullTraits, NoTrace>(std::span<const Point>, HullAlgorithm,
+                                                                          NoTrace&&);
+extern template std::vector<std::size_t> convex_hull<HullTraits, NoTrace>(const std::vector<Point>&, HullAlgorithm,
+                                                                          NoTrace&&);
+/// @endcond
+#endif
 
 }  // namespace t2

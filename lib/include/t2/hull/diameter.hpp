@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "t2/kernel/error.hpp"
+#include "t2/kernel/distance.hpp"
 #include "t2/hull/calipers.hpp"
 #include "t2/hull/convex_hull.hpp"
 #include "t2/hull/traits.hpp"
@@ -52,7 +53,7 @@ std::optional<std::pair<std::size_t, std::size_t>> diameter(std::span<const Poin
     std::pair<std::size_t, std::size_t> best{front[0], back[0]};
     for (std::size_t f : front)
       for (std::size_t b : back)
-        if (detail::compare_pair_distances(P[f], as_front(b), P[best.first], as_front(best.second)) < 0) best = {f, b};
+        if (compare_distance(P[f], as_front(b), P[best.first], as_front(best.second)) < 0) best = {f, b};
     return best;
   }
   const std::vector<std::size_t>& proper = front.empty() ? back : front;
@@ -64,11 +65,18 @@ std::optional<std::pair<std::size_t, std::size_t>> diameter(std::span<const Poin
   // the largest, not the smallest (seed 003)
   for (const auto& [a, b] : antipodal_pairs(P, hull))
     if (!best ||
-        detail::compare_pair_distances(as_front(best->first), as_front(best->second),
+        compare_distance(as_front(best->first), as_front(best->second),
                                        as_front(a), as_front(b)) < 0)
       best = std::make_pair(a, b);
   //< diameter
   return best;
 }
+
+// The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::optional<std::pair<std::size_t, std::size_t>> diameter<HullTraits>(std::span<const Point>);
+/// @endcond
+#endif
 
 }  // namespace t2

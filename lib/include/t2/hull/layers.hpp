@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <numeric>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "t2/hull/graham.hpp"
@@ -30,6 +31,12 @@ enum class LayersMethod {
   jarvis,  ///< Jarvis's march on what is left: O(n²) in all
   graham,  ///< Graham's scan on what is left: O(n² log n) in all
 };
+
+/// Both methods, the default first: the list the command line's choices come from.
+inline constexpr LayersMethod layers_methods[] = {LayersMethod::jarvis, LayersMethod::graham};
+
+/// The name of a method ("jarvis", "graham"), as `t2 layers --method` takes it.
+constexpr std::string_view name(LayersMethod m) { return m == LayersMethod::jarvis ? "jarvis" : "graham"; }
 
 /// The convex layers of the points P: layer j holds the strict hull vertices of what the layers
 /// before it left (indices into P, counter-clockwise in T², one index for equal points). Throws
@@ -59,5 +66,12 @@ std::vector<std::vector<std::size_t>> convex_layers(std::span<const Point> P,
   //< layers
   return layers;
 }
+
+// The default instantiation is compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::vector<std::vector<std::size_t>> convex_layers<HullTraits>(std::span<const Point>, LayersMethod);
+/// @endcond
+#endif
 
 }  // namespace t2

@@ -206,4 +206,13 @@ Chart chart_for(std::span<const Point> P, std::vector<std::size_t>& hull) {
   return edge_chart(v0, v1, detail::left_axis<K>(v0, v1));
 }
 
+// The default instantiations are compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::vector<std::size_t> merge_hull<HullTraits, NoTrace>(std::span<const Point>, NoTrace&&);
+extern template std::vector<std::size_t> merge_hull<HullTraits, NoTrace&>(std::span<const Point>, NoTrace&);
+extern template Chart chart_for<HullTraits>(std::span<const Point>, std::vector<std::size_t>&);
+/// @endcond
+#endif
+
 }  // namespace t2

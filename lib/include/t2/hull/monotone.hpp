@@ -193,4 +193,16 @@ std::vector<std::size_t> akl_toussaint(std::span<const Point> P, const Chart& ch
   return monotone_chain<K>(P, std::move(keep), chart, trace);
 }
 
+// The default instantiations are compiled once, in lib/src/hull/convex_hull.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template std::vector<std::size_t> monotone_chain<HullTraits, NoTrace>(std::span<const Point>,
+                                                                             std::vector<std::size_t>, const Chart&,
+                                                                             NoTrace&&);
+extern template std::vector<std::size_t> monotone_chain<HullTraits, NoTrace&>(std::span<const Point>,
+                                                                              std::vector<std::size_t>, const Chart&,
+                                                                              NoTrace&);
+/// @endcond
+#endif
+
 }  // namespace t2

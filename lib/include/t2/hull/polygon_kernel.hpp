@@ -19,16 +19,22 @@
 /// what makes the unbounded case free: a polygon with vertices on Ω (a wedge, a half-plane) may
 /// have a kernel that reaches Ω, and its corners there are points of Ω, with edges along Ω.
 ///
-/// **Lee and Preparata's O(n).** Cutting by scanning every corner costs O(k) for a region of k
-/// corners, Θ(n²) on a convex polygon. But the edge ending at v_i bounds the region R on its
-/// left, so from v_i the region is seen within half a turn, between two tangent corners F
-/// (clockwise) and L; the next cut line passes through v_i, so R has a corner right of it iff
-/// F or L is (or both lie on it and R is on its right, half a turn wide). A cut then walks
-/// from that corner over the corners it removes only. F and L are kept from one vertex to the
-/// next and climbed to the new tangents. Cost: every corner is created once (at most three
-/// per cut) and removed once, so the cuts cost O(n); Lee and Preparata prove that on a simple
-/// polygon the tangents also move O(n) corners in all. On any other polygon the answer is
-/// still the intersection of the half-planes, exactly; only the time bound is lost.
+/// **Running time: O(n) cuts, O(n²) climbs.** Cutting by scanning every corner costs O(k) for a
+/// region of k corners, Θ(n²) on a convex polygon. But the edge ending at v_i bounds the region
+/// R on its left, so from v_i the region is seen within half a turn, between two tangent
+/// corners F (clockwise) and L; the next cut line passes through v_i, so R has a corner right
+/// of it iff F or L is (or both lie on it and R is on its right, half a turn wide). A cut then
+/// walks from that corner over the corners it removes only: every corner is created once (at
+/// most three per cut) and removed once, so the cuts cost O(n) in all. F and L are kept from one
+/// vertex to the next and climbed to the new tangents, one corner a step; a climb takes at most
+/// as many steps as R has corners, so the climbs cost O(n²), and that is all this code proves.
+/// They are **not** O(n) on every simple polygon: a band that first winds round an m-gon and then
+/// spirals T more turns round the region, three vertices a turn, sends both fingers round all m
+/// corners every turn, Θ(m·T) steps (measured: bench/bench_polygon_kernel.cpp, BM_KernelSpiral,
+/// about 0.13 µs a step). Lee and Preparata's O(n) (1979) needs bookkeeping for such winding
+/// that this climb does not do; on convex and star polygons the time is measured linear
+/// (chapter 07, §5). On a polygon that is not simple the answer is still the intersection of
+/// the half-planes, exactly; only the time bound may be lost.
 
 #include <algorithm>
 #include <cstddef>

@@ -26,6 +26,10 @@ enum class Hull3dAlgorithm {
   gift_wrap,    ///< gift wrapping (seed 004 §7), O(n) per hull edge
 };
 
+/// Every 3-D hull algorithm, the default first: the list the command line's choices come from.
+inline constexpr Hull3dAlgorithm hull3d_algorithms[] = {Hull3dAlgorithm::quickhull, Hull3dAlgorithm::incremental,
+                                                        Hull3dAlgorithm::gift_wrap};
+
 /// The name of an algorithm ("gift-wrap").
 std::string_view name(Hull3dAlgorithm a);
 

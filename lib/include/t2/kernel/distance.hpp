@@ -38,7 +38,8 @@
 ///   |error| ≤ 16γ₉·(M_aM_bM_c)², C = 144u(1 + 2⁻⁴⁰), trusted for M ∈ [2⁻¹⁵⁰, 2¹⁵⁰];
 /// - c on Ω (the sweep), a_w(uₓbₓ + u_yb_y) − b_w(uₓaₓ + u_ya_y): 4 monomials of degree 1 in
 ///   each point, k = 4 (product, sum, product, difference): C = 16u(1 + 2⁻⁴⁰);
-/// - the angle rule: the dot products v·c (3 monomials, k = 3, C = 9u(1 + 2⁻⁴⁰)), then
+/// - the angle rule and the 90° convention: the dot products v·c (3 monomials, k = 3,
+///   C = 9u(1 + 2⁻⁴⁰)), then
 ///   (a·c)²(b·b) − (b·c)²(a·a): 54 monomials of degree 2 in each point, k = 12 (3 in a dot
 ///   product, 7 in its square, 3 + 7 + 1 in the product, 1 in the difference): C = 648u(1 + 2⁻⁴⁰).
 /// The test test_filter_bound checks that filter.hpp derives these constants.
@@ -126,6 +127,13 @@ template <class T>
 [[gnu::noinline]] Sign compare_distance_general(const BasicPoint<T>& a, const BasicPoint<T>& b,
                                                 const BasicPoint<T>& c) {
   const int ia = a.w() == 0, ib = b.w() == 0, ic = c.w() == 0;
+  if (ic && ia + ib == 1) {
+    // The 90° convention: the proper point is 90° from c, so the one on Ω is nearer iff its
+    // angle to c is under 90°, i.e. iff its dot product with c is positive.
+    const Sign s = sign_of_poly([](const auto& p, const auto& q) { return p.w * q.w + p.x * q.x + p.y * q.y; },
+                                ia ? a : b, c);
+    return ia ? -s : s;
+  }
   if (ia + ib + ic >= 2) return compare_angles_at_origin(a, b, c);
   const Sign sa = sign_of(a.w()), sb = sign_of(b.w()), sc = sign_of(c.w());
   if (ic) {
@@ -174,12 +182,16 @@ template <class T>
 ///   proper point c' run off to c on the front makes the front point nearer (the back one is
 ///   beyond infinity), letting it run off on the back makes the back point nearer: no answer
 ///   is right. The seed states the sweep rule for the same canonical hemisphere only.
-/// - **Two or three points on Ω — the angle rule of §4.3.1:** compare the angles ∠(a o c) and
-///   ∠(b o c) between the triples seen as vectors of R³ (o its origin). When a and b are on Ω
-///   and c is proper, and when all three are on Ω, this is again the limit of the proper
-///   configuration (the triple angle is the angle between directions). When c and one of a, b
-///   are on Ω and the other is proper, it is a convention of the seed, not a limit: it depends
-///   on where the origin [1, 0, 0] is.
+/// - **a and b on Ω, c proper, or all three on Ω — the angle rule of §4.3.1:** compare the
+///   angles ∠(a o c) and ∠(b o c) between the triples seen as vectors of R³ (o its origin).
+///   Both cases are the limit of the proper configuration (with all three on Ω the triple
+///   angle is the angle between directions).
+/// - **c and one of a, b on Ω, the other proper — the 90° convention of chapter 03, §5:** no
+///   limit decides, and the seed's angle at the origin would depend on where the origin
+///   [1, 0, 0] is. Every proper point, on either side, counts as 90° from c: the point of Ω is
+///   nearer iff it is less than 90° from c, tied at exactly 90°, farther beyond. It is the
+///   order of the disks around c (incircle.hpp: a circle centred on Ω through a proper point
+///   is a line perpendicular to c, and meets Ω 90° from c).
 template <class T>
 Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c) {
   if constexpr (std::is_same_v<T, double>) {
@@ -187,6 +199,47 @@ Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const Basi
       return detail::compare_distance2(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
   }
   return detail::compare_distance_general(a, b, c);
+}
+
+/// Compares the distance d(a, b) with the distance d(c, d), in the order of the file comment
+/// (finite on one side, then +∞, then "beyond infinity" across sides): NEGATIVE when a, b are
+/// the nearer pair, ZERO when the distances are equal, POSITIVE otherwise. Exact. Throws
+/// `Undefined` when a and b, or c and d, are both on Ω (the distance between two directions is
+/// an angle, not a value of T¹). This is the order of `compare_distance_values` on
+/// `squared_distance(a, b)` and `squared_distance(c, d)`, decided without constructing them.
+///
+/// **Proof.** A pair's class, 0 (same side), 1 (exactly one on Ω) or 2 (opposite sides), is read
+/// from the signs of its weights, and a lower class is nearer. In classes 0 and 2 the values are
+/// [±1, |A − B|²] and [±1, |C − D|²], and with u = b_x a_w − a_x b_w (likewise u_y, v, v_y)
+///
+///     E = (uₓ² + u_y²)(c_w d_w)² − (vₓ² + v_y²)(a_w b_w)² = (a_w b_w c_w d_w)² (|A − B|² − |C − D|²),
+///
+/// whose sign is that of |A − B|² − |C − D|²: the answer in class 0, and its opposite in class 2
+/// (there a larger Euclidean length is nearer to +∞, hence smaller). Two pairs of class 1 are
+/// both at +∞. E has 16 monomials of degree 2 in each point; `sign_of_poly` derives its bound.
+template <class T>
+Sign compare_distance(const BasicPoint<T>& a, const BasicPoint<T>& b, const BasicPoint<T>& c,
+                      const BasicPoint<T>& d) {
+  const auto pair_class = [](const BasicPoint<T>& p, const BasicPoint<T>& q) {
+    const Sign sp = sign_of(p.w()), sq = sign_of(q.w());
+    if (sp == ZERO && sq == ZERO)
+      throw Undefined("compare_distance(a, b, c, d) is undefined when both points of a pair are on Omega: "
+                      "the distance between two directions is an angle, not a value of T1");
+    if (sp == ZERO || sq == ZERO) return 1;
+    return sp == sq ? 0 : 2;
+  };
+  const int kab = pair_class(a, b), kcd = pair_class(c, d);
+  if (kab != kcd) return kab < kcd ? NEGATIVE : POSITIVE;
+  if (kab == 1) return ZERO;
+  const Sign e = sign_of_poly(
+      [](const auto& aw, const auto& ax, const auto& ay, const auto& bw, const auto& bx, const auto& by,
+         const auto& cw, const auto& cx, const auto& cy, const auto& dw, const auto& dx, const auto& dy) {
+        const auto ux = bx * aw - ax * bw, uy = by * aw - ay * bw;
+        const auto vx = dx * cw - cx * dw, vy = dy * cw - cy * dw;
+        return (ux * ux + uy * uy) * (cw * dw) * (cw * dw) - (vx * vx + vy * vy) * (aw * bw) * (aw * bw);
+      },
+      a.w(), a.x(), a.y(), b.w(), b.x(), b.y(), c.w(), c.x(), c.y(), d.w(), d.x(), d.y());
+  return kab == 0 ? e : -e;
 }
 
 }  // namespace t2

@@ -1,7 +1,7 @@
 #pragma once
 /// @file sweep_recorder.hpp
 /// @brief A hook (trace/hook.hpp) for `triangulate` (triangulation/triangulate.hpp) that
-/// records the sweep of chapter 09 as `Step`s: `t2 animate sweep`.
+/// records the sweep of chapter 09 as `Step`s: `t2 animate triangulate` on front points.
 ///
 /// `triangulate` builds on the input's own indices (no reordering) and reports which event each
 /// is: the first triangle, a point on its first edge, a swept point, a flip, the end. The points

@@ -1,7 +1,8 @@
 #pragma once
 /// @file triangulate_t2_recorder.hpp
 /// @brief A hook (trace/hook.hpp) for Algorithm 9 on T² (triangulation/insert_t2.hpp) that
-/// records its steps as `Step`s: `t2 animate triangulate` on input with points behind or on Ω.
+/// records its steps as `Step`s: `t2 animate triangulate-t2`, and `t2 animate triangulate` on
+/// input with points behind or on Ω.
 ///
 /// The algorithm reports input indices and lends its triangulation with the map from its
 /// vertices (positions in the insertion order) to input indices; the recorder reads the faces

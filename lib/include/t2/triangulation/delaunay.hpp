@@ -152,9 +152,10 @@ bool in_conflict(const K& k, const Triangulation& tr, Triangulation::Index t, co
   return ap != ZERO && ap == pb;  // strictly between a and b on their line
 }
 
-/// The triangulation of T² input (defined in delaunay_t2.hpp, included at the end).
+/// The triangulation of T² input (defined in delaunay_t2.hpp, included at the end); with
+/// `whole_sphere` the clockwise faces beyond a hull are kept (the Delaunay complex, complex.hpp).
 template <class K>
-Triangulation delaunay_t2(std::span<const Point> input, const K& kernel);
+Triangulation delaunay_t2(std::span<const Point> input, const K& kernel, bool whole_sphere = false);
 
 /// Degenerate input: dimension 0 or 1 (no triangle); duplicates found by sorting.
 template <class K>
@@ -238,7 +239,10 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
       const Index v = tr.vertex(loc.t, loc.i);
       if (order[p] < order[v]) tr.rename_vertex(loc.t, v, p);
       tr.add_duplicate(order[p] < order[v] ? v : p, order[p] < order[v] ? p : v);
-      tell(trace, [&] { return trace::about(Event::duplicate, tr, order, {std::max(order[p], order[v]), std::min(order[p], order[v])}); });
+      tell(trace, [&] {
+        const auto [kept, gone] = std::minmax(order[p], order[v]);
+        return trace::about(Event::duplicate, tr, order, {gone, kept});
+      });
       continue;
     }
     const Index first_new = static_cast<Index>(tr.size());
@@ -258,12 +262,15 @@ Triangulation incremental(K& kernel, Triangulation tr, std::vector<std::uint32_t
       stack.pop_back();
       const Index u = tr.neighbor(t, 0);
       const bool conflict = detail::in_conflict(kernel, tr, u, pts[p]);
-      if constexpr (trace::traced<Tr>) {  // a finite triangle's circle: what it was asked, what it said
+      // a finite triangle's circle: what it was asked, what it said
+      if constexpr (trace::traced<Tr>) {
         if (!tr.is_infinite(u)) {
+          const Index v0 = tr.vertex(u, 0), v1 = tr.vertex(u, 1), v2 = tr.vertex(u, 2);
           trace::Report r = trace::about(Event::in_circle, tr, order,
-                                         {order[tr.vertex(u, 0)], order[tr.vertex(u, 1)], order[tr.vertex(u, 2)], order[p]});
+                                         {order[v0], order[v1], order[v2], order[p]});
           r.sign = conflict ? POSITIVE : NEGATIVE;
-          r.tie = kernel.in_circle(tr.point(tr.vertex(u, 0)), tr.point(tr.vertex(u, 1)), tr.point(tr.vertex(u, 2)), pts[p]) == ZERO;
+          const Sign s = kernel.in_circle(tr.point(v0), tr.point(v1), tr.point(v2), pts[p]);
+          r.tie = s == ZERO;
           trace(r);
         }
       }
@@ -326,6 +333,15 @@ inline Triangulation delaunay(const std::vector<Point>& points) { return delauna
 /// one copy of the points in memory instead of two.
 inline Triangulation delaunay(std::vector<Point>&& points) { return delaunay_with(std::move(points)); }
 //< delaunay
+
+// The default instantiations are compiled once, in lib/src/triangulation/delaunay.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template Triangulation delaunay_with<DelaunayTraits, NoTrace>(std::span<const Point>, DelaunayTraits,
+                                                                      NoTrace&&);
+extern template Triangulation delaunay_with<DelaunayTraits>(std::vector<Point>&&, DelaunayTraits);
+/// @endcond
+#endif
 
 }  // namespace t2
 

@@ -168,6 +168,26 @@ inline void check_empty_side(std::span<const Point> input, const std::vector<Tri
                   side + " side: that hemisphere has no Delaunay triangulation independent of the origin");
 }
 
+/// The orientation of a face touching Ω (ZERO for a face at v∞); throws `Undefined` for a flat
+/// face without an antipodal pair (a tie on Ω).
+inline Sign face_orient(std::span<const Point> input, const std::array<Triangulation::Index, 3>& t) {
+  constexpr Triangulation::Index inf = Triangulation::infinite;
+  if (t[0] == inf || t[1] == inf || t[2] == inf) return ZERO;
+  const Point &a = input[t[0]], &b = input[t[1]], &c = input[t[2]];
+  const Sign o = orient(a, b, c);
+  if (o == ZERO && !(a == antipode(b) || b == antipode(c) || c == antipode(a)))
+    throw Undefined("delaunay: the points " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+                    std::to_string(t[2]) + " make a flat face without an antipodal pair (a tie on Omega)");
+  return o;
+}
+
+/// The faces touching Ω unchanged, once `face_orient` has checked each (the whole sphere).
+inline std::vector<std::array<Triangulation::Index, 3>> check_flat(
+    std::span<const Point> input, std::vector<std::array<Triangulation::Index, 3>> faces) {
+  for (const auto& t : faces) face_orient(input, t);
+  return faces;
+}
+
 /// The faces touching Ω with v∞ in place of the clockwise ones (property 3 of delaunay_t2.hpp):
 /// an edge between a clockwise face and a counter-clockwise one (or a planar triangle) becomes
 /// a hull edge with its infinite triangle. Throws `Undefined` for a flat face without an
@@ -178,16 +198,8 @@ inline std::vector<std::array<Triangulation::Index, 3>> replace_clockwise(
   constexpr Index inf = Triangulation::infinite;
   std::vector<char> clockwise(faces.size(), 0);
   bool any = false;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const auto& t = faces[f];
-    if (t[0] == inf || t[1] == inf || t[2] == inf) continue;
-    const Point &a = input[t[0]], &b = input[t[1]], &c = input[t[2]];
-    const Sign o = orient(a, b, c);
-    if (o == ZERO && !(a == antipode(b) || b == antipode(c) || c == antipode(a)))
-      throw Undefined("delaunay: the points " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                      std::to_string(t[2]) + " make a flat face without an antipodal pair (a tie on Omega)");
-    if (o == NEGATIVE) clockwise[f] = any = true;
-  }
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (face_orient(input, faces[f]) == NEGATIVE) clockwise[f] = any = true;
   if (!any) return faces;
   std::unordered_map<std::uint64_t, std::size_t> owner;  // the faces touching Ω only: O(hull)
   auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
@@ -269,9 +281,11 @@ inline void append_linked(const std::vector<std::array<Triangulation::Index, 3>>
 
 //> delaunay-t2
 /// The Delaunay triangulation of points of T² not all in front (see the file comment); the
-/// planar triangulations of each side use traits K.
+/// planar triangulations of each side use traits K. With `whole_sphere` the clockwise faces of
+/// property 3 are kept instead of v∞ (the Delaunay complex, t2/voronoi/complex.hpp): the
+/// result then breaks invariant 1 of triangulation.hpp and is read only as a list of faces.
 template <class K>
-Triangulation delaunay_t2(std::span<const Point> input, const K& kernel) {
+Triangulation delaunay_t2(std::span<const Point> input, const K& kernel, bool whole_sphere) {
   using Index = Triangulation::Index;
   std::vector<Index> front, back, omega;
   for (Index k = 0; k < input.size(); ++k)
@@ -321,7 +335,8 @@ Triangulation delaunay_t2(std::span<const Point> input, const K& kernel) {
     RingSide bs{&bp, back.empty() ? std::vector<Index>{} : boundary_cycle(db), back};
     std::vector<std::array<Index, 3>> ring;
     ring_faces(fs, bs, tr.points(), z, ring);
-    append_linked(replace_clockwise(input, std::move(ring)), v, n, open);
+    append_linked(whole_sphere ? check_flat(input, std::move(ring)) : replace_clockwise(input, std::move(ring)), v, n,
+                  open);
   }
   tr.assign(std::move(v), std::move(n));
   tr.finish();

@@ -239,4 +239,11 @@ inline Triangulation delaunay_divide(const std::vector<Point>& points) {
   return delaunay_divide(std::span<const Point>(points));
 }
 
+// The default instantiation is compiled once, in lib/src/triangulation/delaunay.cpp.
+#ifndef T2_FILTER_STATS  // a program that counts the exact stages compiles its own copy
+/// @cond INSTANTIATIONS
+extern template Triangulation delaunay_divide_with<DelaunayTraits>(std::span<const Point>, DelaunayTraits);
+/// @endcond
+#endif
+
 }  // namespace t2

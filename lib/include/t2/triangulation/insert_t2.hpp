@@ -238,7 +238,8 @@ class T2Builder {
       lunes_.push_back({before.second, p, before.first, after.second});
     hull_ = false;
     report(trace::Event::replace, {order_[p]}, {0, 0}, around);
-    report(before.first != kNone ? trace::Event::antipode : trace::Event::cover, {order_[p]});
+    report(before.first != kNone ? trace::Event::antipode : trace::Event::cover,
+           {order_[p]});
     return true;
   }
   //< t2-outside

@@ -29,8 +29,9 @@
 /// `on_edge` for each point inside its first edge, `insert` for each swept point before its
 /// flips (faces[0]: the triangle it went into), `flip` after each flip of step 35 (faces: the new
 /// triangles, as `Triangulation::flip` leaves them), and `done`. The default `NoTrace` builds no
-/// report; t2/trace/sweep_recorder.hpp records the steps for `t2 animate sweep`. T² input takes
-/// no sweep: its steps are those of `triangulate_t2` (insert_t2.hpp), told to the same hook.
+/// report; t2/trace/sweep_recorder.hpp records the steps for `t2 animate
+/// triangulate`. T² input takes no sweep: its steps are those of `triangulate_t2`
+/// (insert_t2.hpp), told to the same hook.
 
 #include <algorithm>
 #include <cstdint>
@@ -64,14 +65,15 @@ inline bool sees_hull_edge(const Triangulation& tr, Triangulation::Index f, cons
 }
 
 //> sweep-hull-flips
-/// Removes the reflex angles at the new hull vertex p (seed 000, Algorithm 9, step 35): t
-/// is an infinite triangle with p at slot 0; while p sees strictly the hull edge of the
+/// Removes the reflex angles at the new hull vertex p (seed 000, Algorithm 9, step 35):
+/// t is an infinite triangle with p at slot 0; while p sees strictly the hull edge of the
 /// infinite triangle u across the edge opposite p, flip that edge (u's hull edge becomes
-/// a finite triangle with p). Returns the infinite triangle at p where the chain stops. Each
-/// flip is told to `trace`; vertex v of tr is input point input_of[v] (empty: v).
+/// a finite triangle with p). Returns the infinite triangle at p where the chain stops.
+/// Each flip is told to `trace`; vertex v of tr is input point input_of[v] (empty: v).
 template <class Trace = NoTrace>
 Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t,
-                                     Trace&& trace = {}, std::span<const std::uint32_t> input_of = {}) {
+                                     Trace&& trace = {},
+                                     std::span<const std::uint32_t> input_of = {}) {
   // t = (p, a, v∞), else (p, v∞, b)
   const bool backward = tr.vertex(t, 2) == Triangulation::infinite;
   for (;;) {
@@ -79,7 +81,11 @@ Triangulation::Index flip_hull_chain(Triangulation& tr, Triangulation::Index t,
     if (!sees_hull_edge(tr, u, tr.point(tr.vertex(t, 0)))) return t;
     // (p, a, v∞) + (a, x, v∞) -> (p, a, x) + (p, x, v∞), and the mirror image
     tr.flip(t, 0);
-    tell(trace, [&] { return trace::about(trace::Event::flip, tr, input_of, {input_of.empty() ? tr.vertex(t, 0) : input_of[tr.vertex(t, 0)]}, {t, u}); });
+    tell(trace, [&] {
+      const Triangulation::Index p = tr.vertex(t, 0);
+      return trace::about(trace::Event::flip, tr, input_of,
+                          {input_of.empty() ? p : input_of[p]}, {t, u});
+    });
     if (backward) t = u;
   }
 }
@@ -154,12 +160,16 @@ Triangulation triangulate(std::span<const Point> input, Trace&& trace = {}) {
   const Index a = u[0], b = u[c - 1], q = u[c];
   const bool ccw = orient(input[a], input[b], input[q]) > 0;
   if (ccw) tr.make_triangle(a, b, q, u.size()); else tr.make_triangle(b, a, q, u.size());
-  tell(trace, [&] { return trace::about(Event::start, tr, {}, {tr.vertex(0, 0), tr.vertex(0, 1), tr.vertex(0, 2)}); });
+  tell(trace, [&] {
+    return trace::about(Event::start, tr, {},
+                        {tr.vertex(0, 0), tr.vertex(0, 1), tr.vertex(0, 2)});
+  });
   // the edge is opposite slot 2 of t0, then of the newest triangle
   for (std::size_t k = 1; k + 1 < c; ++k) {
     const Index t = k == 1 ? 0 : static_cast<Index>(tr.size() - 1);
-    tr.insert_on_edge(t, 2, u[ccw ? k : c - k - 1]);
-    tell(trace, [&] { return trace::about(Event::on_edge, tr, {}, {u[ccw ? k : c - k - 1]}); });
+    const Index on = u[ccw ? k : c - k - 1];
+    tr.insert_on_edge(t, 2, on);
+    tell(trace, [&] { return trace::about(Event::on_edge, tr, {}, {on}); });
   }
   // The sweep: each point sees a hull edge at the previous one, m, whose infinite
   // triangles are (m, x, v∞) and (m, v∞, y) (t1 and t2 of make_triangle for m = q).

@@ -1,0 +1,152 @@
+// The Delaunay complex of T² (t2/voronoi/complex.hpp): the planar or two-sided Delaunay
+// triangulation, and the faces beyond the hull that it replaces by v∞.
+#include "t2/voronoi/complex.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "t2/kernel/angle.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/delaunay_ring.hpp"
+
+namespace t2 {
+
+namespace {
+
+using Index = Triangulation::Index;
+using Face = std::array<Index, 3>;
+
+/// The sites `c` (in order along a line, or around a hull edge from corner to corner) as the
+/// flat polygon c₀ → c_k → c_{k−1} → … → c₁ → c₀, cut by the fan from c₀.
+void flat_fan(const std::vector<Index>& c, std::vector<Face>& faces) {
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) faces.push_back({c[0], c[i + 1], c[i]});
+}
+
+/// Complex part 1 beyond the hull of the front triangulation `tr` (indices into `index`).
+void add_beyond_hull(const Triangulation& tr, const std::vector<Index>& index, std::vector<Face>& faces) {
+  const std::vector<Index> c = detail::boundary_cycle(tr);  // counter-clockwise, from a corner
+  const auto& p = tr.points();
+  const std::size_t k = c.size();
+  std::vector<std::size_t> at;  // the positions of the strict corners in c
+  for (std::size_t s = 0; s < k; ++s)
+    if (detail::cross_of_differences(p[c[(s + k - 1) % k]], p[c[s]], p[c[s]], p[c[(s + 1) % k]]) != ZERO) at.push_back(s);
+  std::vector<Point> corners;
+  for (std::size_t s : at) corners.push_back(p[c[s]]);
+  for (const Face& t : farthest_delaunay(corners))  // reversed: around their back vertex
+    faces.push_back({index[c[at[t[0]]]], index[c[at[t[2]]]], index[c[at[t[1]]]]});
+  for (std::size_t j = 0; j < at.size(); ++j) {  // the sites strictly inside a hull edge
+    const std::size_t end = j + 1 < at.size() ? at[j + 1] : k;
+    std::vector<Index> chain;
+    for (std::size_t s = at[j]; s <= end; ++s) chain.push_back(index[c[s % k]]);
+    flat_fan(chain, faces);
+  }
+}
+
+/// Parts 1, 4 and 5 for sites all in front; `index` maps the points to output indices.
+void front_complex(std::span<const Point> pts, const std::vector<Index>& index, DelaunayComplex& out) {
+  const Triangulation tr = delaunay(pts);
+  for (auto [d, k] : tr.duplicates()) out.duplicates.emplace_back(index[d], index[k]);
+  if (tr.dimension() == 2) {
+    for (const Face& t : tr.finite_triangles()) out.faces.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    add_beyond_hull(tr, index, out.faces);
+    out.dimension = 2;
+    return;
+  }
+  out.dimension = tr.dimension();
+  if (tr.dimension() < 1) return;
+  std::vector<Index> c = detail::boundary_cycle(tr);  // dimension 1: p₀ … p_m … p₁
+  if (c.size() < 4) return;  // two distinct sites
+  c.resize(c.size() / 2 + 1);  // p₀ … p_m in order along the line
+  std::vector<Index> line;
+  for (Index v : c) line.push_back(index[v]);
+  flat_fan(line, out.faces);
+  std::reverse(line.begin(), line.end());
+  flat_fan(line, out.faces);
+  out.dimension = 2;
+}
+
+}  // namespace
+
+//> farthest-delaunay
+std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<const Point> corners) {
+  const Index m = static_cast<Index>(corners.size());
+  std::vector<Face> fan;
+  for (Index i = 1; i + 1 < m; ++i) fan.push_back({0, i, i + 1});
+  if (m < 4) return fan;
+  for (Index i = 0; i < m; ++i) fan.push_back({(i + 1) % m, i, Triangulation::infinite});
+  Triangulation tr(std::vector<Point>(corners.begin(), corners.end()));
+  tr.assemble(fan);
+  std::vector<Index> stack;  // half-edges that may be illegal
+  for (Index e = 0; e < 3 * tr.size(); ++e) stack.push_back(e);
+  while (!stack.empty()) {
+    const Index t = stack.back() / 3;
+    const int i = static_cast<int>(stack.back() % 3);
+    stack.pop_back();
+    const Index e = tr.twin(t, i), u = e / 3;
+    if (tr.is_infinite(t) || tr.is_infinite(u)) continue;  // hull edges stay
+    const Point& d = tr.point(tr.vertex(u, static_cast<int>(e % 3)));
+    // Legal when the circle of t holds d (inside or on): every circle must hold every corner.
+    if (in_circle(tr.point(tr.vertex(t, 0)), tr.point(tr.vertex(t, 1)), tr.point(tr.vertex(t, 2)), d) != NEGATIVE)
+      continue;
+    tr.flip(t, i);  // strictly convex: the corners are in strictly convex position
+    stack.insert(stack.end(), {3 * t, 3 * t + 2, 3 * u, 3 * u + 1});
+  }
+  return tr.finite_triangles();
+}
+//< farthest-delaunay
+
+DelaunayComplex delaunay_complex(std::span<const Point> points) {
+  DelaunayComplex out;
+  out.points.assign(points.begin(), points.end());
+  std::vector<Index> front, back, omega;
+  for (Index k = 0; k < points.size(); ++k)
+    (points[k].w() > 0 ? front : points[k].w() < 0 ? back : omega).push_back(k);
+  auto finish = [&] {
+    std::sort(out.duplicates.begin(), out.duplicates.end());
+    return std::move(out);
+  };
+  if (back.empty() && omega.empty()) {  // parts 1, 4, 5
+    front_complex(points, front, out);
+    return finish();
+  }
+  if (front.empty() && omega.empty()) {  // part 2: the mirror of ¬S
+    std::vector<Point> anti;
+    for (const Point& p : points) anti.push_back(antipode(p));
+    DelaunayComplex a = delaunay_complex(anti);
+    for (auto& t : a.faces) std::swap(t[1], t[2]);
+    out.faces = std::move(a.faces);
+    out.duplicates = std::move(a.duplicates);
+    out.dimension = a.dimension;
+    return finish();
+  }
+  Triangulation tr0;  // the distinct directions of Ω
+  const std::vector<Index> z = detail::omega_order(points, omega, tr0);
+  if ((front.empty() || back.empty()) && z.size() >= 2)
+    throw Undefined("voronoi: the " + std::string(front.empty() ? "front" : "back") +
+                    " side holds no site while " + std::to_string(omega[0]) + " and other sites lie on Omega: " +
+                    "that hemisphere would be shared among them by angles seen from a proper point, "
+                    "which depend on the origin");
+  if (detail::all_collinear_t2(points)) {  // part 5, or not built yet
+    const Triangulation line = delaunay(points);
+    out.duplicates = line.duplicates();
+    out.dimension = line.dimension();
+    if (points.size() - out.duplicates.size() <= 2) return finish();
+  }
+  if (detail::all_collinear_t2(points) || front.empty() || back.empty())
+    throw std::runtime_error("voronoi: collinear sites on both sides, or one site on Omega with one side empty: "
+                             "not built yet (issue 24)");
+  const Triangulation t2 = detail::delaunay_t2(points, DelaunayTraits{}, true);  // part 3
+  out.duplicates = t2.duplicates();
+  for (Index t = 0; t < t2.size(); ++t) {
+    const Face f{t2.vertex(t, 0), t2.vertex(t, 1), t2.vertex(t, 2)};
+    if (t2.is_infinite(t)) throw std::logic_error("delaunay_complex: v-infinity in a two-sided complex");
+    out.faces.push_back(f);
+  }
+  out.dimension = 2;
+  return finish();
+}
+
+}  // namespace t2

@@ -1,0 +1,128 @@
+// t2 voronoi from the command line: the format of the README (vertex, edge, line), the library's
+// answer on generated input, cocircular points, the exit statuses of bad and undefined
+// input, and the picture.
+#include <algorithm>
+#include <sstream>
+
+#include "cli_testing.hpp"
+#include "t2/kernel/scene.hpp"
+#include "t2/voronoi/voronoi.hpp"
+
+namespace t2::testing {
+namespace {
+
+class VoronoiCli : public CliTest {};
+
+struct Parsed {
+  std::vector<std::string> coords;           // "W X Y" of each vertex
+  std::vector<std::vector<int>> sites;       // the sites of each vertex
+  std::vector<std::array<int, 4>> edges;     // A B s t
+  std::vector<std::pair<int, int>> lines;    // s t
+};
+
+Parsed parse(const std::string& out) {
+  Parsed p;
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream l(line);
+    std::string kind;
+    l >> kind;
+    if (kind == "vertex") {
+      std::string w, x, y;
+      l >> w >> x >> y;
+      p.coords.push_back(w + " " + x + " " + y);
+      std::vector<int> s;
+      for (int k; l >> k;) s.push_back(k);
+      p.sites.push_back(s);
+    } else if (kind == "edge") {
+      std::array<int, 4> e{};
+      l >> e[0] >> e[1] >> e[2] >> e[3];
+      p.edges.push_back(e);
+    } else if (kind == "line") {
+      std::pair<int, int> s;
+      l >> s.first >> s.second;
+      p.lines.push_back(s);
+    } else {
+      ADD_FAILURE() << "unknown line: " << line;
+    }
+  }
+  return p;
+}
+
+/// v rotated to start at its smallest element.
+std::vector<int> rotated(std::vector<int> v) {
+  std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+  return v;
+}
+
+TEST_F(VoronoiCli, CocircularSquareHasOneVertexEachSide) {
+  write("sq.t2", "1 0\n0 1\n-1 0\n0 -1\n");
+  const Result r = t2("voronoi sq.t2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Parsed p = parse(r.out);
+  ASSERT_EQ(p.coords.size(), 2u) << r.out;
+  for (std::size_t v = 0; v < 2; ++v) {  // the centre in front, counter-clockwise; behind, mirrored
+    if (p.coords[v] == "1 0 0") {
+      EXPECT_EQ(rotated(p.sites[v]), (std::vector<int>{0, 1, 2, 3}));
+    } else {
+      EXPECT_EQ(p.coords[v], "-1 0 0");
+      EXPECT_EQ(rotated(p.sites[v]), (std::vector<int>{0, 3, 2, 1}));
+    }
+  }
+  EXPECT_EQ(p.edges.size(), 4u);
+  for (const auto& e : p.edges) EXPECT_NE(e[0], e[1]);
+}
+
+TEST_F(VoronoiCli, EqualsTheLibrary) {
+  ASSERT_EQ(t2("gen uniform --n 300 --seed 7 -o pts.t2").status, 0);
+  const Result r = t2("voronoi pts.t2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Parsed p = parse(r.out);
+  std::vector<Point> pts;
+  for (const ScenePoint& q : read_scene(dir_ / "pts.t2").points) pts.push_back(q.point);
+  const VoronoiDiagram vd = voronoi(pts);
+  ASSERT_EQ(p.coords.size(), vd.vertices.size());
+  ASSERT_EQ(p.edges.size(), vd.edges.size());
+  for (std::size_t v = 0; v < vd.vertices.size(); ++v) {
+    std::istringstream c(p.coords[v]);
+    std::string w, x, y;
+    c >> w >> x >> y;
+    EXPECT_EQ(ExactPoint(Integer(w), Integer(x), Integer(y)), vd.vertices[v]);
+    EXPECT_EQ(p.sites[v], std::vector<int>(vd.vertex_sites[v].begin(), vd.vertex_sites[v].end()));
+  }
+  for (std::size_t e = 0; e < vd.edges.size(); ++e)
+    EXPECT_EQ(p.edges[e], (std::array<int, 4>{int(vd.edges[e].a), int(vd.edges[e].b), int(vd.edges[e].s),
+                                              int(vd.edges[e].t)}));
+}
+
+TEST_F(VoronoiCli, TwoPointsGiveALineAndDuplicatesAreNamed) {
+  write("two.t2", "0 0\n3 1\n0 0\n");
+  const Result r = t2("voronoi two.t2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "line 0 1\n");
+  EXPECT_TRUE(has(r.err, "two.t2:3: p2 equals p0 (line 1): merged")) << r.err;
+}
+
+TEST_F(VoronoiCli, BadAndUndefinedInput) {
+  write("bad.t2", "0 0\n1 x\n");
+  const Result bad = t2("voronoi bad.t2");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(has(bad.err, "bad.t2:2")) << bad.err;
+  write("omega.t2", "0 0\n1 0\n0 1\n0 1 0\n0 0 1\n");  // no back point, two points on Omega
+  const Result u = t2("voronoi omega.t2");
+  EXPECT_EQ(u.status, 3);
+  EXPECT_TRUE(has(u.err, "undefined")) << u.err;
+  EXPECT_TRUE(u.out.empty());
+}
+
+TEST_F(VoronoiCli, DrawsTheDiagram) {
+  write("tri.t2", "0 0\n4 0\n0 3\n1 1\n");
+  const Result r = t2("voronoi tri.t2 --svg v.svg --model both --scene v.scene");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(has(slurp(dir_ / "v.svg"), "<svg"));
+  EXPECT_TRUE(has(slurp(dir_ / "v.scene"), "segment"));
+}
+
+}  // namespace
+}  // namespace t2::testing

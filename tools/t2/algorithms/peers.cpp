@@ -1,0 +1,18 @@
+// The peers of `t2 bench` that are not t2's algorithms: what they are called and what they
+// solve. Their runs are the worker's (bench/t2_bench_worker.cpp), which alone links CGAL and
+// qhull; tests/test_registry.cpp checks that the worker runs every one registered here.
+#include "algorithms/registry.hpp"
+
+namespace t2cli::algorithms {
+namespace {
+
+T2_PEER({"cgal", {"hull", "delaunay", "hull3d"},
+         "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay), convex_hull_3 (hull3d)", true});
+T2_PEER({"qhull", {"hull", "hull3d"}, "qhull (libqhull_r, default options: merges nearly coplanar facets)", false});
+T2_PEER({"raw", {"hull", "delaunay"},
+         "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false, true});
+T2_PEER({"exact", {"hull", "delaunay"}, "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true,
+         true});
+
+}  // namespace
+}  // namespace t2cli::algorithms

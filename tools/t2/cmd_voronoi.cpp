@@ -1,0 +1,143 @@
+// t2 voronoi: the Voronoi diagram of T² of a scene's points (t2/voronoi/voronoi.hpp, the dual
+// of the Delaunay complex, Algorithm 11): exact vertices, edges and bisector lines, for scripts.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "model_picture.hpp"
+#include "scene_argument.hpp"
+#include "t2/kernel/distance.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/scene.hpp"
+#include "t2/voronoi/voronoi.hpp"
+
+namespace t2cli {
+namespace {
+
+using Index = t2::VoronoiDiagram::Index;
+
+struct Options {
+  std::string file;       ///< the scene file, - for standard input
+  AnswerDrawing drawing;  ///< --svg, --model and --scene
+};
+
+/// The vertex with its coordinates divided by their (positive) greatest common divisor.
+t2::ExactPoint reduced(const t2::ExactPoint& v) {
+  t2::Integer g;
+  mpz_gcd(g.get_mpz_t(), v.w().get_mpz_t(), v.x().get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v.y().get_mpz_t());
+  if (g == 0) return v;
+  return t2::ExactPoint(t2::Integer(v.w() / g), t2::Integer(v.x() / g), t2::Integer(v.y() / g));
+}
+
+std::string listing(const t2::VoronoiDiagram& vd) {
+  std::string out;
+  for (std::size_t v = 0; v < vd.vertices.size(); ++v) {
+    const t2::ExactPoint p = reduced(vd.vertices[v]);
+    out += fmt::format("vertex {} {} {} ", p.w().get_str(), p.x().get_str(), p.y().get_str());
+    for (Index s : vd.vertex_sites[v]) out += fmt::format(" {}", s);
+    out += '\n';
+  }
+  for (const auto& e : vd.edges) out += fmt::format("edge {} {}  {} {}\n", e.a, e.b, e.s, e.t);
+  for (auto [s, t] : vd.lines) out += fmt::format("line {} {}\n", s, t);
+  return out;
+}
+
+/// The edge from a to b between the cells of s and t, drawn: the segment of T² from a to b when
+/// a point of it, a + b, has no site nearer than s; otherwise the other arc, through ¬(a + b).
+void draw_edge(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd, const t2::VoronoiDiagram::Edge& e,
+               t2::Scene& s) {
+  const t2::SceneStyle st = style_of("color=red width=2 layer=1");
+  const t2::ExactPoint &a = vd.vertices[e.a], &b = vd.vertices[e.b];
+  if (a == t2::antipode(b)) return;  // either half of the bisector: not drawn
+  const t2::ExactPoint m(t2::Integer(a.w() + b.w()), t2::Integer(a.x() + b.x()), t2::Integer(a.y() + b.y()));
+  bool other = false;
+  const t2::ExactPoint se = t2::to_exact(P[e.s]);
+  for (const t2::Point& d : P) {
+    try {
+      other = other || t2::compare_distance(t2::to_exact(d), se, m) == t2::NEGATIVE;
+    } catch (const t2::Undefined&) {  // m on Ω between a front and a back site: no order
+    }
+  }
+  const t2::Point pa = t2::to_double(a), pb = t2::to_double(b);
+  if (!other) {
+    s.segments.push_back(t2::SceneSegment{scene_point(pa), scene_point(pb), 0, st});
+    return;
+  }
+  const t2::Point pm = t2::to_double(t2::antipode(m));
+  s.segments.push_back(t2::SceneSegment{scene_point(pa), scene_point(pm), 0, st});
+  s.segments.push_back(t2::SceneSegment{scene_point(pm), scene_point(pb), 0, st});
+}
+
+/// The diagram as a scene: the edges in red, the vertices as red dots, the bisector lines.
+t2::Scene answer(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd) {
+  t2::Scene s;
+  for (const auto& e : vd.edges) draw_edge(P, vd, e, s);
+  for (const t2::ExactPoint& v : vd.vertices)
+    s.points.push_back(scene_point(t2::to_double(v), style_of("color=red marker=dot layer=2")));
+  for (auto [i, j] : vd.lines) {
+    const t2::Point &a = P[i], &b = P[j];
+    t2::Point p(0, 1, 0), q(0, 0, 1);  // sites on different sides: Ω
+    if (t2::sign_of(a.w()) == t2::sign_of(b.w()) && a.w() != 0) {  // the perpendicular bisector
+      const double ax = a.x() / a.w(), ay = a.y() / a.w(), bx = b.x() / b.w(), by = b.y() / b.w();
+      p = t2::Point(a.w() > 0 ? 1 : -1, (ax + bx) / 2 * (a.w() > 0 ? 1 : -1), (ay + by) / 2 * (a.w() > 0 ? 1 : -1));
+      q = t2::Point(0, ay - by, bx - ax);
+    }
+    s.lines.push_back(t2::SceneLine{scene_point(p), scene_point(q), 0, style_of("color=red width=2 layer=1")});
+  }
+  return s;
+}
+
+int run(const Options& o) {
+  const t2::Scene scene = read_scene_argument(o.file);
+  const std::vector<t2::Point> P = scene_points(scene);
+  t2::VoronoiDiagram vd;
+  try {
+    vd = t2::voronoi(P);
+  } catch (const t2::Undefined& e) {
+    throw t2::Undefined(fmt::format("{}: {}", scene.name, e.what()));
+  } catch (const std::runtime_error& e) {  // not built yet (complex.hpp, voronoi.hpp)
+    throw t2::Undefined(fmt::format("{}: not implemented: {}", scene.name, e.what()));
+  }
+  for (auto [dropped, kept] : vd.duplicates)
+    fmt::print(stderr, "t2 voronoi: {}:{}: p{} equals p{} (line {}): merged\n", scene.name,
+               scene.points[dropped].line, dropped, kept, scene.points[kept].line);
+  write_answer(o.drawing, scene, answer(P, vd),
+               fmt::format("t2 voronoi {}: {} vertices, {} edges (draw them over their input: t2 draw FILE THIS)",
+                           scene.name, vd.vertices.size(), vd.edges.size()));
+  fmt::print("{}", listing(vd));
+  return kOk;
+}
+
+Action setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description(
+      "Prints the Voronoi diagram of T2 of the points of the scene file FILE (- for standard\n"
+      "input): the dual of the Delaunay complex, one cell per point covering the whole sphere.\n"
+      "For points in front only, its back half is the farthest-point Voronoi diagram.");
+  app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
+  add_drawing_options(app, o->drawing, "the points and the diagram");
+  app.footer(
+      "Output: one line per Voronoi vertex, 'vertex W X Y  s1 s2 s3 ...': its exact homogeneous\n"
+      "coordinates as integers without a common factor (W > 0 front, W < 0 back, W = 0 on\n"
+      "Omega), then the 0-based indices of the points whose cells meet there, counter-\n"
+      "clockwise around it (four or more for cocircular points). Then one line per edge,\n"
+      "'edge A B  s t': vertex numbers in output order and the two points it separates. Two\n"
+      "points have no vertex: 'line s t', their bisector. Equal points are merged (stderr).\n"
+      "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 undefined in\n"
+      "T2 (a side without points while two or more points lie on Omega; a tie on Omega) or\n"
+      "not implemented (collinear points on both sides; a vertex at the middle of two points of\n"
+      "Omega).");
+  return [o] { return run(*o); };
+}
+
+}  // namespace
+
+T2_COMMAND({"voronoi", "the Voronoi diagram of T2 of a scene's points (exact vertices, edges)", setup});
+
+}  // namespace t2cli
