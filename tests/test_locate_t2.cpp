@@ -152,7 +152,9 @@ std::set<FaceKind> check_record(const Triangulation& tr) {
     if (k != FaceKind::lune) continue;
     for (int i = 0; i < 3; ++i) {
       const Point &a = tr.point(tr.vertex(t, (i + 1) % 3)), &b = tr.point(tr.vertex(t, (i + 2) % 3));
-      if (a == antipode(b)) EXPECT_EQ(side_of_edge(tr, t, i, tr.point(tr.vertex(t, i))), POSITIVE) << "lune " << t;
+      if (a == antipode(b)) {
+        EXPECT_EQ(side_of_edge(tr, t, i, tr.point(tr.vertex(t, i))), POSITIVE) << "lune " << t;
+      }
     }
   }
   return kinds;
@@ -194,7 +196,7 @@ Tally check_all(const std::vector<Point>& pts, int side, unsigned seed) {
 }
 
 TEST(LocateT2, BothSidesWithoutHull) {
-  for (unsigned seed = 1; seed <= 4 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 4 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     const Tally n = check_all(points(40 + 10 * seed, {1, -1}, seed % 2 ? 3 : 1000, seed), seed % 2 ? 3 : 1000, seed);
     EXPECT_GT(n.vertex, 0);
@@ -205,7 +207,7 @@ TEST(LocateT2, BothSidesWithoutHull) {
 }
 
 TEST(LocateT2, OmegaSites) {
-  for (unsigned seed = 1; seed <= 4 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 4 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     std::vector<Point> p;
     try {
@@ -224,7 +226,7 @@ TEST(LocateT2, OmegaSites) {
 // A hull: front points, and front points with a few back points near Ω (all in an open
 // hemisphere): infinite faces, and queries behind and on Ω outside the hull.
 TEST(LocateT2, WithAHull) {
-  for (unsigned seed = 1; seed <= 4 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 4 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     std::vector<Point> p = points(60, {1}, seed % 2 ? 4 : 1000, 20 + seed);
     const int side = seed % 2 ? 4 : 1000;
@@ -239,7 +241,7 @@ TEST(LocateT2, WithAHull) {
 // Antipodal pairs: lunes in both constructions, located through the recorded bisector.
 TEST(LocateT2, AntipodalPairs) {
   int lunes = 0;  // queries answered by a lune
-  for (unsigned seed = 1; seed <= 6 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 6 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     std::vector<Point> p = points(30, {1, -1}, seed % 2 ? 3 : 50, 30 + seed);
     for (int k = 0; k < 4; ++k) p.push_back(antipode(p[static_cast<std::size_t>(k)]));
@@ -313,7 +315,9 @@ TEST(LocateT2, KindsAgreeAcrossConstructions) {
         if (trs[m].is_infinite(t)) continue;
         const std::set<Index> f = {trs[m].vertex(t, 0), trs[m].vertex(t, 1), trs[m].vertex(t, 2)};
         const auto [it, fresh] = seen.emplace(f, face_kind(trs[m], t));
-        if (!fresh) EXPECT_EQ(it->second, face_kind(trs[m], t));
+        if (!fresh) {
+          EXPECT_EQ(it->second, face_kind(trs[m], t));
+        }
       }
     }
     for (const auto& k : kinds) {

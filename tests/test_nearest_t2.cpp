@@ -55,7 +55,9 @@ void check_nearest(const Triangulation& tr, const Point& q, Index hint) {
   const Index v = tr.nearest_vertex(q, hint);
   ASSERT_NE(v, Triangulation::infinite);
   ASSERT_NE(tr.face_of(v), Triangulation::none) << "not a vertex";
-  if (q.w() == 0 && front && back) ASSERT_EQ(tr.point(v).w(), 0) << "a proper site where a site on Omega is nearest";
+  if (q.w() == 0 && front && back) {
+    ASSERT_EQ(tr.point(v).w(), 0) << "a proper site where a site on Omega is nearest";
+  }
   for (Index s : all) {
     if (q.w() == 0 && tr.point(s).w() != 0 && tr.point(v).w() != 0 && (tr.point(s).w() > 0) != (tr.point(v).w() > 0))
       continue;  // not comparable (and not needed: v is one side's only kind here)
@@ -82,7 +84,7 @@ void check_input(const std::vector<Point>& pts, int side, unsigned seed) {
 }
 
 TEST(NearestT2, BothSides) {
-  for (unsigned seed = 1; seed <= 6 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 6 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     const int side = seed % 3 == 0 ? 3 : seed % 3 == 1 ? 20 : 1000;
     check_input(points(60 + 10 * seed, {1, -1}, side, seed), side, seed);
@@ -90,7 +92,7 @@ TEST(NearestT2, BothSides) {
 }
 
 TEST(NearestT2, WithAHull) {
-  for (unsigned seed = 1; seed <= 6 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 6 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     const int side = seed % 2 ? 4 : 1000;
     std::vector<Point> p = points(60, {1}, side, 20 + seed);
@@ -101,7 +103,7 @@ TEST(NearestT2, WithAHull) {
 }
 
 TEST(NearestT2, OmegaSites) {
-  for (unsigned seed = 1; seed <= 8 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 8 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     std::vector<Point> p = points(60, seed % 2 ? std::vector<int>{1, -1, 0} : std::vector<int>{1, 0}, 6, 50 + seed);
     try {
@@ -114,7 +116,7 @@ TEST(NearestT2, OmegaSites) {
 }
 
 TEST(NearestT2, AntipodalPairsAndCollinearSides) {
-  for (unsigned seed = 1; seed <= 4 * testing::scale(); ++seed) {
+  for (int seed = 1; seed <= 4 * testing::scale(); ++seed) {
     SCOPED_TRACE(seed);
     std::vector<Point> p = points(40, {1, -1}, 5, 70 + seed);
     for (int k = 0; k < 4; ++k) p.push_back(antipode(p[static_cast<std::size_t>(k)]));
