@@ -214,6 +214,54 @@ TEST(Voronoi, CocircularSitesMeetAtOneVertexWithoutZeroLengthEdges) {
   EXPECT_EQ(check(line, rng), "");
 }
 
+/// Empty when cell(s) of every distinct site lists, once each, exactly the vertices whose cells
+/// include s (by a scan of vertex_sites), consecutive ones joined by an edge of s; and when the
+/// sites are all in front, a cell whose vertices are all in front turns counter-clockwise around
+/// its site (orient(v_i, v_i+1, s) > 0 on the exact points: a convex polygon around s).
+std::string cell_error(const std::vector<Point>& p, const VoronoiDiagram& vd) {
+  bool front = true;
+  for (const Point& q : p) front = front && q.w() > 0;
+  for (Index s : distinct(p, vd)) {
+    const std::vector<Index> c = vd.cell(s);
+    std::set<Index> brute;
+    for (Index v = 0; v < vd.size(); ++v) {
+      const auto c = vd.vertex_sites(v);
+      if (std::find(c.begin(), c.end(), s) != c.end()) brute.insert(v);
+    }
+    if (std::set<Index>(c.begin(), c.end()) != brute || c.size() != brute.size())
+      return "cell " + std::to_string(s) + " does not list its vertices once each";
+    std::set<std::pair<Index, Index>> joined;
+    for (const auto& e : vd.edges)
+      if (e.s == s || e.t == s) joined.insert({e.a, e.b}), joined.insert({e.b, e.a});
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (!joined.count({c[i], c[(i + 1) % c.size()]}))
+        return "cell " + std::to_string(s) + ": consecutive vertices without an edge";
+    bool bounded = front && c.size() >= 3;
+    for (Index v : c) bounded = bounded && sgn(vd.vertex(v).w()) > 0;
+    if (bounded)
+      for (std::size_t i = 0; i < c.size(); ++i)
+        if (orient(vd.vertex(c[i]), vd.vertex(c[(i + 1) % c.size()]), to_exact(p[s])) != POSITIVE)
+          return "cell " + std::to_string(s) + " does not turn counter-clockwise around its site";
+  }
+  return "";
+}
+
+TEST(Voronoi, CellsArePolygonsAroundTheirSites) {
+  std::mt19937 rng(6);
+  for (int r = 0; r < 20; ++r) {
+    auto p = r % 2 ? scattered_sites(5 + r, 1, rng) : grid_sites(5 + r, 3, 1, rng);
+    EXPECT_EQ(cell_error(p, voronoi(p)), "") << r;
+    auto b = scattered_sites(3 + r % 5, -1, rng);
+    p.insert(p.end(), b.begin(), b.end());
+    try {
+      EXPECT_EQ(cell_error(p, voronoi(p)), "") << r;
+    } catch (const Undefined&) {  // a tie on Ω (delaunay_t2.hpp)
+    }
+  }
+  const std::vector<Point> two{Point::cartesian(0, 0), Point::cartesian(1, 0)};
+  EXPECT_TRUE(voronoi(two).cell(0).empty());
+}
+
 TEST(Voronoi, FewSitesHaveLinesAndNoVertex) {
   const std::vector<Point> two{Point::cartesian(0, 0), Point::cartesian(1, 0), Point::cartesian(0, 0)};
   VoronoiDiagram vd = voronoi(two);

@@ -90,15 +90,14 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
     std::vector<Index> id(tr.size());  // triangle → face, none for the infinite ones
     Index nf = 0;
     for (Index t = 0; t < tr.size(); ++t) id[t] = tr.is_infinite(t) ? Triangulation::none : nf++;
-    out.faces.resize(nf);
-    out.twins.resize(3 * std::size_t(nf));
+    out.faces.reserve(tr.size());  // one pass over fresh memory: no zeros written first
+    out.twins.reserve(3 * tr.size());
     for (Index t = 0; t < tr.size(); ++t) {
-      const Index f = id[t];
-      if (f == Triangulation::none) continue;
-      out.faces[f] = {tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)};
+      if (id[t] == Triangulation::none) continue;
+      out.faces.push_back({tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)});
       for (int i = 0; i < 3; ++i) {
         const Index e = tr.twin(t, i), g = id[e / 3];
-        out.twins[3 * f + i] = g == Triangulation::none ? Triangulation::none : 3 * g + e % 3;
+        out.twins.push_back(g == Triangulation::none ? Triangulation::none : 3 * g + e % 3);
       }
     }
     out.kinds.assign(nf, POSITIVE);  // triangulation.hpp, invariant 1

@@ -135,8 +135,8 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
   }
   vd.edges.reserve(3 * std::size_t(nf) / 2);
   if (merge.empty()) {  // one vertex per face, its cells the face (`first` stays empty)
-    vd.cells.resize(3 * std::size_t(nf));
-    for (Index f = 0; f < nf; ++f) std::copy(F[f].begin(), F[f].end(), vd.cells.begin() + 3 * f);
+    vd.cells.reserve(3 * std::size_t(nf));  // one pass over fresh memory
+    for (const auto& t : F) vd.cells.insert(vd.cells.end(), t.begin(), t.end());
     for (Index h = 0; h < 3 * nf; ++h) {  // u → v in f, from the vertex of f to its twin's
       const Index f = h / 3, u = F[f][(h + 1) % 3], v = F[f][(h + 2) % 3];
       if (u < v) vd.edges.push_back({f, dc.twins[h] / 3, u, v});
@@ -191,6 +191,33 @@ ExactPoint VoronoiDiagram::vertex(Index v) const {
   const auto c = vertex_sites(v);
   return circumcentre(sites[c[0]], sites[c[1]], sites[c[2]]);
 }
+
+//> voronoi-cell
+std::vector<Index> VoronoiDiagram::cell(Index s) const {
+  // At vertex v, s is followed by a and preceded by b (counter-clockwise around v): the face
+  // (s, a, b) of the complex. The next face counter-clockwise around s is across s–b, the
+  // vertex where s is followed by b.
+  std::unordered_map<Index, Index> after;   // the site after s at a vertex → that vertex
+  std::unordered_map<Index, Index> before;  // vertex → the site before s there
+  for (Index v = 0; v < size(); ++v) {
+    const auto c = vertex_sites(v);
+    for (std::size_t k = 0; k < c.size(); ++k)
+      if (c[k] == s) {
+        after[c[(k + 1) % c.size()]] = v;
+        before[v] = c[(k + c.size() - 1) % c.size()];
+      }
+  }
+  std::vector<Index> out;
+  if (before.empty()) return out;
+  const Index start = before.begin()->first;
+  Index v = start;
+  do {
+    out.push_back(v);
+    v = after.at(before.at(v));
+  } while (v != start && out.size() < before.size());
+  return out;
+}
+//< voronoi-cell
 
 VoronoiDiagram voronoi(const DelaunayComplex& dc) { return dual(dc, dc.points); }
 

@@ -84,6 +84,11 @@ struct VoronoiDiagram {
   }
   /// Vertex v: its exact homogeneous coordinates (constructed on each call: GMP integers).
   ExactPoint vertex(Index v) const;
+  /// The cell of site s as a polygon of T²: the vertices on its boundary, counter-clockwise
+  /// around s (consecutive ones joined by an edge between s and a neighbour; `vertex(v)` gives
+  /// their coordinates). Empty for a dropped duplicate or without vertices (fewer than three
+  /// distinct sites). By a scan of all vertices: O(cells.size()) a call.
+  std::vector<Index> cell(Index s) const;
 };
 
 /// The T² circumcentre of the face (a, b, c) of a Delaunay complex (file comment), exact.
