@@ -113,6 +113,9 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
   for (Index f = 0; f < nf; ++f)
     if (kind[f] == ZERO) centre.emplace(f, circumcentre(P[F[f][0]], P[F[f][1]], P[F[f][2]]));
   std::vector<std::pair<Index, Index>> merge;  // adjacent faces with one centre (file comment)
+  // While no faces merge, each face is a vertex: its cells and edges are written in this pass.
+  vd.cells.reserve(3 * std::size_t(nf));
+  vd.edges.reserve(3 * std::size_t(nf) / 2);
   constexpr Index ahead = 16;  // the sites are in input order: fetch those of later faces early
   for (Index f = 0; f < nf; ++f) {
     if (f + ahead < nf)
@@ -125,6 +128,13 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
         const Index e = dc.twins[3 * (f + ahead / 2) + i];
         __builtin_prefetch(&P[F[e / 3][e % 3]]);
       }
+    if (merge.empty()) {
+      vd.cells.insert(vd.cells.end(), F[f].begin(), F[f].end());
+      for (int i = 0; i < 3; ++i) {  // u → v in f, from the vertex of f to its twin's
+        const Index u = F[f][(i + 1) % 3], v = F[f][(i + 2) % 3];
+        if (u < v) vd.edges.push_back({f, dc.twins[3 * f + i] / 3, u, v});
+      }
+    }
     for (int i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, e = dc.twins[h], g = e / 3;
       if (e < h || kind[f] != kind[g]) continue;
@@ -133,16 +143,9 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
         merge.emplace_back(f, g);
     }
   }
-  vd.edges.reserve(3 * std::size_t(nf) / 2);
-  if (merge.empty()) {  // one vertex per face, its cells the face (`first` stays empty)
-    vd.cells.reserve(3 * std::size_t(nf));  // one pass over fresh memory
-    for (const auto& t : F) vd.cells.insert(vd.cells.end(), t.begin(), t.end());
-    for (Index h = 0; h < 3 * nf; ++h) {  // u → v in f, from the vertex of f to its twin's
-      const Index f = h / 3, u = F[f][(h + 1) % 3], v = F[f][(h + 2) % 3];
-      if (u < v) vd.edges.push_back({f, dc.twins[h] / 3, u, v});
-    }
-    return vd;
-  }
+  if (merge.empty()) return vd;  // one vertex per face, its cells the face (`first` stays empty)
+  vd.cells.clear();
+  vd.edges.clear();
   std::vector<Index> vx(nf);  // the vertex of each face
   vd.first.push_back(0);
   {
