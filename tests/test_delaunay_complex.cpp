@@ -55,7 +55,7 @@ std::string sphere_error(const DelaunayComplex& dc) {
 }
 
 /// Empty when `twins` links each half-edge to the reverse edge of another face (an involution
-/// without fixed points), checked against the face list, and `kinds` holds each face's
+/// without fixed points), checked against the face list, and `turns` holds each face's
 /// orientation when its sites are on one side (else ZERO).
 std::string twin_error(const DelaunayComplex& dc) {
   if (dc.twins.size() != 3 * dc.faces.size()) return "twins: " + std::to_string(dc.twins.size()) + " half-edges";
@@ -69,11 +69,11 @@ std::string twin_error(const DelaunayComplex& dc) {
     const auto [u, v] = ends(h);
     if (ends(e) != std::make_pair(v, u)) return "twins: the half-edge " + std::to_string(h) + " is not reversed";
   }
-  if (dc.kinds.size() != dc.faces.size()) return "kinds: " + std::to_string(dc.kinds.size()) + " faces";
+  if (dc.turns.size() != dc.faces.size()) return "turns: " + std::to_string(dc.turns.size()) + " faces";
   for (std::size_t f = 0; f < dc.faces.size(); ++f) {  // the kind, from the sites by orient
     const Point &a = dc.points[dc.faces[f][0]], &b = dc.points[dc.faces[f][1]], &c = dc.points[dc.faces[f][2]];
     const bool one_side = a.w() != 0 && sign_of(a.w()) == sign_of(b.w()) && sign_of(b.w()) == sign_of(c.w());
-    if (dc.kinds[f] != (one_side ? orient(a, b, c) : ZERO)) return "kinds: face " + std::to_string(f);
+    if (dc.turns[f] != (one_side ? orient(a, b, c) : ZERO)) return "turns: face " + std::to_string(f);
   }
   return "";
 }

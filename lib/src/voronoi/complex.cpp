@@ -28,7 +28,7 @@ void flat_fan(const std::vector<Index>& c, std::vector<Face>& faces) {
 }
 
 /// The kind of the face (a, b, c) (complex.hpp): its orientation if it is proper, else ZERO.
-Sign kind_of(const Point& a, const Point& b, const Point& c) {
+Sign turn_of(const Point& a, const Point& b, const Point& c) {
   const Sign s = sign_of(a.w());
   if (s == ZERO || sign_of(b.w()) != s || sign_of(c.w()) != s) return ZERO;
   return orient(a, b, c);
@@ -48,14 +48,14 @@ void add_beyond_hull(const Triangulation& tr, DelaunayComplex& out) {
   for (std::size_t s : at) corners.push_back(p[c[s]]);
   for (const Face& t : farthest_delaunay(corners))  // reversed: around their back vertex
     faces.push_back({c[at[t[0]]], c[at[t[2]]], c[at[t[1]]]});
-  out.kinds.resize(faces.size(), NEGATIVE);
+  out.turns.resize(faces.size(), NEGATIVE);
   for (std::size_t j = 0; j < at.size(); ++j) {  // the sites strictly inside a hull edge
     const std::size_t end = j + 1 < at.size() ? at[j + 1] : k;
     std::vector<Index> chain;
     for (std::size_t s = at[j]; s <= end; ++s) chain.push_back(c[s % k]);
     flat_fan(chain, faces);
   }
-  out.kinds.resize(faces.size(), ZERO);
+  out.turns.resize(faces.size(), ZERO);
 }
 
 /// Links the half-edges of `out` still without a twin (`Triangulation::none`) and those of the
@@ -100,7 +100,7 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
         out.twins.push_back(g == Triangulation::none ? Triangulation::none : 3 * g + e % 3);
       }
     }
-    out.kinds.assign(nf, POSITIVE);  // triangulation.hpp, invariant 1
+    out.turns.assign(nf, POSITIVE);  // triangulation.hpp, invariant 1
     add_beyond_hull(tr, out);
     link_open(out, nf);  // the hull edges and the faces beyond
     return;
@@ -112,7 +112,7 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
   flat_fan(c, out.faces);
   std::reverse(c.begin(), c.end());
   flat_fan(c, out.faces);
-  out.kinds.assign(out.faces.size(), ZERO);
+  out.turns.assign(out.faces.size(), ZERO);
   link_open(out, 0);
   out.dimension = 2;
 }
@@ -175,7 +175,7 @@ DelaunayComplex delaunay_complex(std::span<const Point> points) {
     for (Index h = 0; h < a.twins.size(); ++h)
       out.twins[h - h % 3 + swapped[h % 3]] = a.twins[h] - a.twins[h] % 3 + swapped[a.twins[h] % 3];
     out.faces = std::move(a.faces);
-    out.kinds = std::move(a.kinds);  // orient(p, r, q) = −orient(¬p, ¬q, ¬r) · −1: the same
+    out.turns = std::move(a.turns);  // orient(p, r, q) = −orient(¬p, ¬q, ¬r) · −1: the same
     out.duplicates = std::move(a.duplicates);
     out.dimension = a.dimension;
     return finish();
@@ -202,7 +202,7 @@ DelaunayComplex delaunay_complex(std::span<const Point> points) {
     const Face f{t2.vertex(t, 0), t2.vertex(t, 1), t2.vertex(t, 2)};
     if (t2.is_infinite(t)) throw std::logic_error("delaunay_complex: v-infinity in a two-sided complex");
     out.faces.push_back(f);
-    out.kinds.push_back(kind_of(points[f[0]], points[f[1]], points[f[2]]));
+    out.turns.push_back(turn_of(points[f[0]], points[f[1]], points[f[2]]));
     for (int i = 0; i < 3; ++i) out.twins.push_back(t2.twin(t, i));
   }
   out.dimension = 2;

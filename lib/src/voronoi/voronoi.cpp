@@ -107,11 +107,11 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
   }
   const auto& F = dc.faces;
   const auto& P = vd.sites;
-  const auto& kind = dc.kinds;
+  const auto& turn = dc.turns;
   const Index nf = static_cast<Index>(F.size());
   std::unordered_map<Index, ExactPoint> centre;  // of the faces that are not proper
   for (Index f = 0; f < nf; ++f)
-    if (kind[f] == ZERO) centre.emplace(f, circumcentre(P[F[f][0]], P[F[f][1]], P[F[f][2]]));
+    if (turn[f] == ZERO) centre.emplace(f, circumcentre(P[F[f][0]], P[F[f][1]], P[F[f][2]]));
   std::vector<std::pair<Index, Index>> merge;  // adjacent faces with one centre (file comment)
   // While no faces merge, each face is a vertex: its cells and edges are written in this pass.
   vd.cells.reserve(3 * std::size_t(nf));
@@ -137,8 +137,8 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
     }
     for (int i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, e = dc.twins[h], g = e / 3;
-      if (e < h || kind[f] != kind[g]) continue;
-      if (kind[f] != ZERO ? in_circle(P[F[f][0]], P[F[f][1]], P[F[f][2]], P[F[g][e % 3]]) == ZERO
+      if (e < h || turn[f] != turn[g]) continue;
+      if (turn[f] != ZERO ? in_circle(P[F[f][0]], P[F[f][1]], P[F[f][2]], P[F[g][e % 3]]) == ZERO
                           : centre.at(f) == centre.at(g))
         merge.emplace_back(f, g);
     }

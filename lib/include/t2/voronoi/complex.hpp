@@ -84,12 +84,12 @@ struct DelaunayComplex {
   /// face f opposite slot i (from faces[f][i + 1] to faces[f][i + 2], indices mod 3) is the edge
   /// of face g opposite slot j, in reverse. An involution without fixed points.
   std::vector<Index> twins;
-  /// The kind of each face: for a *proper* face — three sites on one side of T², not collinear —
+  /// The turn of each face: for a *proper* face — three sites on one side of T², not collinear —
   /// the sign of orient(a, b, c) (homogeneous, so for back sites the opposite of their drawn
   /// turn); ZERO for the others (a site on Ω, sites on both sides, or collinear). Kept from the
   /// construction where it is known (the front triangles turn counter-clockwise, the farthest
   /// ones clockwise, the fans are flat), computed by `orient` elsewhere.
-  std::vector<Sign> kinds;
+  std::vector<Sign> turns;
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept), sorted by dropped
   int dimension = -1;  ///< −1 no site, 0 one distinct site, 1 two distinct sites, 2 faces exist
 };
