@@ -56,7 +56,7 @@ TEST(Registry, EveryEntryIsComplete) {
     for (const auto& pr : p.problems) EXPECT_NE(reg::find_problem(pr), nullptr) << p.name << ": " << pr;
   }
   // what `t2 hull`, `t2 triangulate`, `t2 delaunay` and `t2 hull3d` run has the command's name
-  for (const char* name : {"hull", "triangulate", "delaunay", "hull3d", "layers", "intersect"}) EXPECT_NE(reg::find(name), nullptr);
+  for (const char* name : {"hull", "triangulate", "delaunay", "hull3d", "layers", "intersect", "voronoi"}) EXPECT_NE(reg::find(name), nullptr);
 }
 
 // The vertices of each polygon of a scene, as points.
