@@ -31,7 +31,9 @@ const fs::path kExercises = kSource / "exercises";
 const fs::path kHostile = kExercises / "_hostile";
 
 // These tests also run under the ASan preset: the tool is then sanitized, and so are the
-// programs it builds (libt2.a needs the sanitizer runtime); the grader's reports stay the same.
+// programs it builds (the kernel archive needs the sanitizers' runtimes, which the driver links
+// statically, so that its sandbox holds the same shared libraries as in the plain build); the
+// grader's reports stay the same.
 
 // The honest stub throws "not implemented yet" everywhere: it scores 0 on every test (checked
 // below), which is what every hostile submission must score, test by test.

@@ -133,18 +133,23 @@ std::vector<std::string> link_libraries(bool with_gtest) {
   return l;
 }
 
-// The driver's: GMP linked in (its shared library is not in the driver's sandbox), the rest
-// shared (there is no static fmt on Debian).
+// The driver's, the same in both builds: GMP linked in (its shared library is not in the
+// driver's sandbox), the rest shared (there is no static fmt on Debian). A sanitized tool's
+// kernel archive needs the sanitizers' runtimes: linked in statically too, so that the driver
+// needs no shared library the plain build's does not (a dynamic libasan brought the host's /usr
+// into the sandbox, and with it libgmp.so for dlopen: issue 29, break 3).
 std::vector<std::string> driver_libraries() {
-  if (sanitized_tool()) return link_libraries(false);
-  return {library_archive().string(), "-Wl,-Bstatic", "-lgmpxx", "-lgmp", "-Wl,-Bdynamic", "-lfmt", "-lpthread"};
+  std::vector<std::string> l;
+  if (sanitized_tool()) l = {"-fsanitize=address,undefined", "-static-libasan", "-static-libubsan"};
+  l.insert(l.end(), {library_archive().string(), "-Wl,-Bstatic", "-lgmpxx", "-lgmp", "-Wl,-Bdynamic", "-lfmt", "-lpthread"});
+  return l;
 }
 
 // The shared libraries of a driver (see TrustedParts::runtime), read by ldd from a trusted
-// program linked with the same shared libraries (the checker), allowed by name.
+// program linked with the same shared libraries (the checker), allowed by name: never GMP,
+// never a sanitizer's runtime (the driver has both linked in).
 std::vector<std::pair<fs::path, fs::path>> driver_runtime(const fs::path& checker) {
   std::vector<std::pair<fs::path, fs::path>> r;
-  if (sanitized_tool()) return r;
   static const char* const kAllowed[] = {"ld-linux", "libc.so", "libm.so", "libstdc++.so", "libgcc_s.so", "libfmt.so",
                                          "libpthread.so", "libmvec.so"};
   // The checker may not need fmt (linked as needed); this tool always does.
@@ -337,9 +342,7 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
     b.messages = why;
     return b;
   }
-  std::vector<std::string> link = {"g++", "-fno-lto", "-fno-use-linker-plugin"};
-  if (sanitized_tool()) link.push_back("-fsanitize=address,undefined");
-  link.push_back("/out/student.o");
+  std::vector<std::string> link = {"g++", "-fno-lto", "-fno-use-linker-plugin", "/out/student.o"};
   link.insert(link.end(), objs.begin(), objs.end());
   for (auto l : driver_libraries()) link.push_back(l == library_archive().string() ? "/t2/lib/libt2_kernel.a" : l);
   link.insert(link.end(), {"-o", "/out/driver"});

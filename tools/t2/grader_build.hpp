@@ -21,7 +21,7 @@ struct TrustedParts {
   std::vector<fs::path> driver_objects;  ///< driver main + remote.cpp (driver side)
   /// The shared libraries the driver runs with, host path → path inside: the loader, the C and
   /// C++ runtimes and fmt, nothing else (GMP is linked in statically), so a driver's dlopen has
-  /// nothing else to open. Empty under the sanitizers, whose drivers run with the host's /usr.
+  /// nothing else to open; the same under the sanitizers (their runtimes are linked in).
   std::vector<std::pair<fs::path, fs::path>> runtime;
 };
 

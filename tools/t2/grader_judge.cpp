@@ -98,8 +98,9 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, c
   SandboxRun d;
   d.argv = {"/t2/driver", fmt::format("--t2-calls={}", calls.r), fmt::format("--t2-answers={}", answers.w)};
   d.copied = {{driver, "/t2/driver"}};  // a copy: no host path in the sandbox's mountinfo
-  // No /usr: the driver's shared libraries only (GMP, Boost, CGAL ... are not there to dlopen).
-  d.system = parts.runtime.empty();
+  // No /usr, in either build: the driver's shared libraries only (GMP, Boost, CGAL ... are not
+  // there to dlopen).
+  d.system = false;
   d.read_only = parts.runtime;
   d.handover_fds = {calls.r, answers.w};
   d.limits.cpu_seconds = cpu_s;
