@@ -1,10 +1,32 @@
-// t2::voronoi (the dual of the Delaunay complex) against t2::delaunay on the same uniform front
-// points in one run: CPU times of delaunay, delaunay_complex and voronoi, and their ratios.
+// t2::voronoi (the dual of the Delaunay complex, exact) against t2::delaunay, Boost.Polygon's
+// Voronoi sweep and CGAL's Delaunay dual, on the same points in one run: CPU times and ratios.
 //
 //   bench_voronoi --benchmark_filter=Dual     10⁵ and 10⁶ uniform points
+//
+// The points: t2::gen's uniform points of [-1, 1)², scaled by 2³⁰ and rounded to integers,
+// because Boost.Polygon takes 32-bit integer coordinates; every library gets these integers
+// (as doubles, exact, w = 1 for t2). What each timing covers:
+//  - delaunay: t2::delaunay (the planar triangulation with v∞);
+//  - complex: t2::delaunay_complex (the whole-sphere complex, with its twins);
+//  - voronoi: t2::voronoi(points) — the complex and its dual: vertices (cocircular faces merged
+//    by the exact in-circle test), their cells counter-clockwise, the edges; the exact centres
+//    are constructed on demand by `vertex(v)`, not here;
+//  - boost: boost::polygon::construct_voronoi into a voronoi_diagram<double> (the sweep, exact
+//    predicates, vertices as doubles);
+//  - cgal_dt: CGAL's Delaunay_triangulation_2 with Epick (range insertion, spatially sorted);
+//  - cgal_dual: cgal_dt plus, for every finite face, its dual (the circumcentre, a double
+//    construction) and a pass over the finite edges (the Voronoi edges) — the Delaunay-dual
+//    diagram as CGAL users build it, without the merge of cocircular faces.
+// CPU time of the process (CLOCK_PROCESS_CPUTIME_ID): less disturbed by other load than wall time.
 #include <benchmark/benchmark.h>
 
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <boost/polygon/voronoi.hpp>
+
+#include <cmath>
 #include <ctime>
+#include <utility>
 #include <vector>
 
 #include "t2/gen/generate.hpp"
@@ -13,34 +35,87 @@
 
 namespace {
 
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalDelaunay = CGAL::Delaunay_triangulation_2<Epick>;
+
 double cpu_now() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-void Dual(benchmark::State& state) {
+/// Uniform points rounded to integers of at most 2³⁰ in absolute value.
+std::vector<std::pair<int, int>> integer_points(std::size_t n) {
   t2::gen::Options o;
-  o.n = static_cast<std::size_t>(state.range(0));
+  o.n = n;
   o.seed = 42;
-  const std::vector<t2::Point> pts = t2::gen::points(t2::gen::Kind::uniform, o);
-  double td = 0, tc = 0, tv = 0;
+  std::vector<std::pair<int, int>> out;
+  for (const t2::Point& p : t2::gen::points(t2::gen::Kind::uniform, o))
+    out.emplace_back(static_cast<int>(std::lround(p.x() / p.w() * 1073741824.0)),
+                     static_cast<int>(std::lround(p.y() / p.w() * 1073741824.0)));
+  return out;
+}
+
+void Dual(benchmark::State& state) {
+  const auto ip = integer_points(static_cast<std::size_t>(state.range(0)));
+  std::vector<t2::Point> pts;
+  std::vector<boost::polygon::point_data<int>> bp;
+  std::vector<Epick::Point_2> cp;
+  for (auto [x, y] : ip) {
+    pts.push_back(t2::Point::cartesian(x, y));
+    bp.emplace_back(x, y);
+    cp.emplace_back(x, y);
+  }
+  double td = 0, tc = 0, tv = 0, tb = 0, tg = 0, tgd = 0;
   for (auto _ : state) {
     double t0 = cpu_now();
     benchmark::DoNotOptimize(t2::delaunay(pts).size());
     double t1 = cpu_now();
+    td += t1 - t0;
     benchmark::DoNotOptimize(t2::delaunay_complex(pts).faces.size());
-    double t2c = cpu_now();
-    const t2::VoronoiDiagram vd = t2::voronoi(pts);
-    benchmark::DoNotOptimize(vd.vertices.size());
-    double t3 = cpu_now();
-    td += t1 - t0, tc += t2c - t1, tv += t3 - t2c;
+    t0 = cpu_now();
+    tc += t0 - t1;
+    {
+      const t2::VoronoiDiagram vd = t2::voronoi(pts);
+      benchmark::DoNotOptimize(vd.size());
+      t1 = cpu_now();
+      tv += t1 - t0;
+      state.counters["t2_vertices"] = double(vd.size());
+    }
+    {
+      boost::polygon::voronoi_diagram<double> bvd;
+      t0 = cpu_now();
+      boost::polygon::construct_voronoi(bp.begin(), bp.end(), &bvd);
+      benchmark::DoNotOptimize(bvd.num_vertices());
+      t1 = cpu_now();
+      tb += t1 - t0;
+      state.counters["boost_vertices"] = double(bvd.num_vertices());
+    }
+    {
+      t0 = cpu_now();
+      CgalDelaunay dt(cp.begin(), cp.end());
+      benchmark::DoNotOptimize(dt.number_of_faces());
+      t1 = cpu_now();
+      double sx = 0;
+      std::size_t edges = 0;
+      for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) sx += dt.dual(f).x();
+      for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) ++edges;
+      benchmark::DoNotOptimize(sx);
+      benchmark::DoNotOptimize(edges);
+      const double t2c = cpu_now();
+      tg += t1 - t0;
+      tgd += t2c - t0;
+    }
   }
   const double k = double(state.iterations());
   state.counters["delaunay_s"] = td / k;
   state.counters["complex_s"] = tc / k;
   state.counters["voronoi_s"] = tv / k;
+  state.counters["boost_s"] = tb / k;
+  state.counters["cgal_dt_s"] = tg / k;
+  state.counters["cgal_dual_s"] = tgd / k;
   state.counters["voronoi/delaunay"] = tv / td;
+  state.counters["voronoi/boost"] = tv / tb;
 }
 BENCHMARK(Dual)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
 

@@ -17,7 +17,8 @@
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
 // cgal (hull, delaunay, hull3d), qhull (hull, hull3d), raw and exact (hull, delaunay: t2's own
 // code on plain double predicates, inexact, or on exact arithmetic at every call, no filter).
-// A problem of space 3 takes points of R^3 (INPUT cube or sphere).
+// A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
+// segments (n segments with exactly n crossings, t2::gen::segments).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
 // cluster) or clustered (64 normal clusters). Points are written with w = 1 (circle rounded to
 // Cartesian doubles) so that every implementation sees the same doubles.
@@ -25,7 +26,9 @@
 #include <sys/resource.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/ch_akl_toussaint.h>
 #include <CGAL/convex_hull_3.h>
@@ -101,6 +104,17 @@ std::vector<t2::Point3> make_input3(const std::string& input, std::size_t n, std
   std::vector<t2::Point3> P;
   for (const auto& [x, y, z] : t2::gen::points3(t2::gen::kind_from_name(input), o)) P.push_back({x, y, z});
   return P;
+}
+
+// The segments of INPUT segments: n segments with exactly n proper crossings and no other
+// contact, every endpoint with w = 1.
+std::vector<t2::Segment> make_segments(const std::string& input, std::size_t n, std::uint64_t seed) {
+  if (input != "segments") throw Usage("intersect takes the input segments, not " + input);
+  t2::gen::Options o;
+  o.n = n;
+  o.crossings = n;
+  o.seed = seed;
+  return t2::gen::segments(o);
 }
 
 // The hull by qhull (libqhull_r, default options) of points of dimension `dim` (coordinates one
@@ -215,6 +229,23 @@ Run hull3d_peer(const std::string& impl, const std::vector<t2::Point3>& P) {
   return nullptr;
 }
 
+// CGAL's surface sweep on the exact kernel (its intersection points are constructed exactly),
+// without the endpoints: on `segments` input every crossing is proper, so it counts what t2
+// counts.
+Run intersect_peer(const std::string& impl, const std::vector<t2::Segment>& S) {
+  if (impl != "cgal") return nullptr;
+  using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+  auto C = std::make_shared<std::vector<Epeck::Segment_2>>();
+  for (const auto& s : S)
+    C->emplace_back(Epeck::Point_2(s.source().x() / s.source().w(), s.source().y() / s.source().w()),
+                    Epeck::Point_2(s.target().x() / s.target().w(), s.target().y() / s.target().w()));
+  return [C] {
+    std::vector<Epeck::Point_2> out;
+    CGAL::compute_intersection_points(C->begin(), C->end(), std::back_inserter(out), false);
+    return out.size();
+  };
+}
+
 // The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
 Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
   namespace reg = t2cli::algorithms;
@@ -225,6 +256,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
     run = problem == "hull"       ? hull_peer(impl, in.points)
           : problem == "delaunay" ? delaunay_peer(impl, in.points)
           : problem == "hull3d"   ? hull3d_peer(impl, in.points3)
+          : problem == "intersect" ? intersect_peer(impl, in.segments)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;
@@ -244,8 +276,10 @@ int work(int argc, char** argv) {
   const t2cli::algorithms::Problem* pr = t2cli::algorithms::find_problem(problem);
   if (pr == nullptr) throw Usage("unknown problem " + problem);
   t2cli::algorithms::BenchInput in;  // "owned" hands its points to the result
-  if (pr->space == 3)
+  if (pr->input == t2cli::algorithms::Input::space)
     in.points3 = make_input3(input, n, seed);
+  else if (pr->input == t2cli::algorithms::Input::segments)
+    in.segments = make_segments(input, n, seed);
   else
     in.points = make_input(input, n, seed);
   const Run run = prepare(problem, impl, in);

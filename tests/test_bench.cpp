@@ -13,7 +13,8 @@
 #include <thread>
 #include <vector>
 
-#include "bench_plot.hpp"
+#include <t2/draw/loglog.hpp>
+
 #include "bench_progress.hpp"
 #include "bench_run.hpp"
 #include "bench_stats.hpp"
@@ -29,7 +30,7 @@ TEST(BenchFit, RecoversAKnownExponent) {
   for (double e : {0.5, 1.0, 1.5, 2.0}) {
     std::vector<double> n, t;
     for (double x : {10.0, 100.0, 3000.0, 1e5, 1e7}) n.push_back(x), t.push_back(3e-9 * std::pow(x, e));
-    const t2bench::Fit f = t2bench::fit_power_law(n, t);
+    const t2::draw::PowerLaw f = t2::draw::fit_power_law(n, t);
     EXPECT_NEAR(f.exponent, e, 1e-12);
     EXPECT_NEAR(f.constant / 3e-9, 1, 1e-9);
     EXPECT_EQ(f.points, 5u);
@@ -40,17 +41,17 @@ TEST(BenchFit, LeastSquaresOfScatteredPoints) {
   // log t = 1, 2, 2, 3 at log n = 0, 1, 1, 2 (natural logs): slope 1 by hand.
   const double e = std::exp(1.0);
   const std::vector<double> n = {1, e, e, e * e}, t = {e, e * e, e * e, e * e * e};
-  EXPECT_NEAR(t2bench::fit_power_law(n, t).exponent, 1, 1e-12);
+  EXPECT_NEAR(t2::draw::fit_power_law(n, t).exponent, 1, 1e-12);
   // log t = 0, 1, 0, 1 at log n = 0, 0, 1, 1: slope 0.
   const std::vector<double> n2 = {1, 1, e, e}, t2v = {1, e, 1, e};
-  EXPECT_NEAR(t2bench::fit_power_law(n2, t2v).exponent, 0, 1e-12);
+  EXPECT_NEAR(t2::draw::fit_power_law(n2, t2v).exponent, 0, 1e-12);
 }
 
 TEST(BenchFit, UndefinedWithOneSize) {
   const std::vector<double> n = {1000, 1000}, t = {0.1, 0.2};
-  EXPECT_FALSE(t2bench::fit_defined(n, t));
+  EXPECT_FALSE(t2::draw::fit_defined(n, t));
   const std::vector<double> n2 = {1000, 2000}, t2v = {0.1, 0};  // a zero time is left out
-  EXPECT_FALSE(t2bench::fit_defined(n2, t2v));
+  EXPECT_FALSE(t2::draw::fit_defined(n2, t2v));
 }
 
 TEST(BenchSteps, LogarithmicFromN1ToN2) {
@@ -137,10 +138,10 @@ TEST(BenchProgress, Setting) {
 }
 
 TEST(BenchPlot, SvgWithOneLinePerSeries) {
-  const t2bench::Series a{"a", {1e3, 1e4, 1e5}, {1e-3, 1e-2, 1e-1}};
-  const t2bench::Series b{"b", {1e3, 1e4, 1e5}, {1e-3, 1e-1, 10}};
-  const std::string one = t2bench::plot_svg({a}, "title", "seconds");
-  const std::string two = t2bench::plot_svg({a, b}, "title", "seconds");
+  const t2::draw::Series a{"a", {1e3, 1e4, 1e5}, {1e-3, 1e-2, 1e-1}};
+  const t2::draw::Series b{"b", {1e3, 1e4, 1e5}, {1e-3, 1e-1, 10}};
+  const std::string one = t2::draw::loglog_svg({a}, "title", "seconds");
+  const std::string two = t2::draw::loglog_svg({a, b}, "title", "seconds");
   for (const auto* svg : {&one, &two}) {
     EXPECT_EQ(svg->rfind("<?xml", 0), 0u);
     EXPECT_TRUE(has(*svg, "<svg")) << *svg;
@@ -148,7 +149,7 @@ TEST(BenchPlot, SvgWithOneLinePerSeries) {
     EXPECT_TRUE(has(*svg, "</svg>"));
   }
   EXPECT_GT(count(two, "<path"), count(one, "<path"));  // the second series adds its lines
-  EXPECT_EQ(one, t2bench::plot_svg({a}, "title", "seconds"));  // deterministic
+  EXPECT_EQ(one, t2::draw::loglog_svg({a}, "title", "seconds"));  // deterministic
 }
 
 // Rows of the table: impl -> (n -> size).

@@ -54,6 +54,30 @@ std::string sphere_error(const DelaunayComplex& dc) {
   return "";
 }
 
+/// Empty when `twins` links each half-edge to the reverse edge of another face (an involution
+/// without fixed points), checked against the face list, and `turns` holds each face's
+/// orientation when its sites are on one side (else ZERO).
+std::string twin_error(const DelaunayComplex& dc) {
+  if (dc.twins.size() != 3 * dc.faces.size()) return "twins: " + std::to_string(dc.twins.size()) + " half-edges";
+  auto ends = [&](Index h) {
+    const Face& t = dc.faces[h / 3];
+    return std::make_pair(t[(h + 1) % 3], t[(h + 2) % 3]);
+  };
+  for (Index h = 0; h < dc.twins.size(); ++h) {
+    const Index e = dc.twins[h];
+    if (e >= dc.twins.size() || dc.twins[e] != h || e / 3 == h / 3) return "twins: not an involution at " + std::to_string(h);
+    const auto [u, v] = ends(h);
+    if (ends(e) != std::make_pair(v, u)) return "twins: the half-edge " + std::to_string(h) + " is not reversed";
+  }
+  if (dc.turns.size() != dc.faces.size()) return "turns: " + std::to_string(dc.turns.size()) + " faces";
+  for (std::size_t f = 0; f < dc.faces.size(); ++f) {  // the kind, from the sites by orient
+    const Point &a = dc.points[dc.faces[f][0]], &b = dc.points[dc.faces[f][1]], &c = dc.points[dc.faces[f][2]];
+    const bool one_side = a.w() != 0 && sign_of(a.w()) == sign_of(b.w()) && sign_of(b.w()) == sign_of(c.w());
+    if (dc.turns[f] != (one_side ? orient(a, b, c) : ZERO)) return "turns: face " + std::to_string(f);
+  }
+  return "";
+}
+
 /// Empty when every face of three sites on one side, not collinear, has no site strictly inside
 /// its disk (in_circle: for a clockwise face the disk is the complement of the circle's).
 std::string disk_error(const DelaunayComplex& dc) {
@@ -80,6 +104,7 @@ bool check(const std::vector<Point>& pts, const char* what) {
     return false;
   }
   EXPECT_EQ(sphere_error(dc), "") << what;
+  EXPECT_EQ(twin_error(dc), "") << what;
   EXPECT_EQ(disk_error(dc), "") << what;
   return true;
 }
@@ -128,6 +153,7 @@ TEST(DelaunayComplex, CollinearFewAndDuplicateSites) {
   line.push_back(line[2]);
   const DelaunayComplex dc = delaunay_complex(line);
   EXPECT_EQ(sphere_error(dc), "");
+  EXPECT_EQ(twin_error(dc), "");
   EXPECT_EQ(dc.faces.size(), 2u * (6 - 2));  // two flat hexagons, cut into four triangles each
   for (const Face& t : dc.faces) EXPECT_EQ(orient(line[t[0]], line[t[1]], line[t[2]]), ZERO);
   EXPECT_EQ(delaunay_complex(std::vector<Point>{}).dimension, -1);
@@ -177,6 +203,7 @@ TEST(DelaunayComplex, FrontOnlyBackFacesAreTheFarthestPointDelaunayTriangles) {
     const auto p = scattered_sites(4 + r % 14, 1, rng);  // general position: the oracle's set is exact
     const DelaunayComplex dc = delaunay_complex(p);
     ASSERT_EQ(sphere_error(dc), "");
+    EXPECT_EQ(twin_error(dc), "");
     std::set<Face> back;
     for (const Face& t : dc.faces)
       if (orient(p[t[0]], p[t[1]], p[t[2]]) == NEGATIVE) back.insert(rotated({t[0], t[2], t[1]}));

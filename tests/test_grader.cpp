@@ -11,6 +11,7 @@
 #include <chrono>
 #include <iterator>
 #include <map>
+#include <regex>
 
 #include <filesystem>
 #include <fstream>
@@ -30,7 +31,9 @@ const fs::path kExercises = kSource / "exercises";
 const fs::path kHostile = kExercises / "_hostile";
 
 // These tests also run under the ASan preset: the tool is then sanitized, and so are the
-// programs it builds (libt2.a needs the sanitizer runtime); the grader's reports stay the same.
+// programs it builds (the kernel archive needs the sanitizers' runtimes, which the driver links
+// statically, so that its sandbox holds the same shared libraries as in the plain build); the
+// grader's reports stay the same.
 
 // The honest stub throws "not implemented yet" everywhere: it scores 0 on every test (checked
 // below), which is what every hostile submission must score, test by test.
@@ -136,12 +139,24 @@ const std::map<std::string, std::vector<std::string>> kRefusedNaming = {
     {"long-template-argument", {"t2::antipode"}},
     {"abi-tag", {"t2::collinear"}}};
 
+// The submissions that reach code outside the exercise's allow-list (issue 29): they do not
+// compile, and the compiler's message names what is not there.
+const std::map<std::string, std::string> kRefusedCompiling = {
+    {"boost-multiprecision", "boost/multiprecision/cpp_int.hpp: No such file or directory"},
+    {"macro-before-include", "'lib_antipode' is not a member of 't2'"}};
+
 TEST_P(Hostile, ScoresWhatTheStubScoresAndLeavesNothing) {
   Results r;
   expect_like_stub(kHostile / GetParam(), r);
   if (const auto it = kRefusedNaming.find(GetParam()); it != kRefusedNaming.end()) {
     EXPECT_NE(r.output.find("your code calls "), std::string::npos) << r.output;
     for (const auto& name : it->second) EXPECT_NE(r.output.find(name), std::string::npos) << name << ": " << r.output;
+  }
+  if (const auto it = kRefusedCompiling.find(GetParam()); it != kRefusedCompiling.end()) {
+    std::string out = r.output;  // GCC quotes with ‘ ’ or ' ' depending on the locale
+    for (const std::string q : {"\u2018", "\u2019"})
+      for (size_t at; (at = out.find(q)) != std::string::npos;) out.replace(at, q.size(), "'");
+    EXPECT_NE(out.find(it->second), std::string::npos) << r.output;
   }
 }
 
@@ -342,6 +357,50 @@ bool antipodal(const t2::Point&, const t2::Point&) { attempt(); return false; }
   EXPECT_FALSE(fs::exists(target)) << "the submission wrote outside its temporary directory";
   EXPECT_EQ(r.raw.find("TEST(Hidden"), std::string::npos) << "the hidden tests were readable";
   EXPECT_EQ(r.raw.find("NETWORK-OK"), std::string::npos);
+}
+
+// The manifests' allow-lists (issue 29): `allowed:` names every library header that the API
+// header, the stub, the reference and the wrong solutions include, and what those headers
+// include, transitively, is the kernel only (no algorithm header, whose code a macro could rename).
+TEST(GraderAllowList, EveryManifestAllowsWhatItsCodeIncludesAndOnlyKernelHeaders) {
+  const std::regex inc(R"(^\s*#\s*include\s*[<"](t2/[^>"]+)[>"])");
+  auto includes = [&](const fs::path& f) {
+    std::set<std::string> r;
+    std::istringstream in(slurp(f));
+    std::smatch m;
+    for (std::string l; std::getline(in, l);)
+      if (std::regex_search(l, m, inc)) r.insert(m[1].str());
+    return r;
+  };
+  int exercises = 0;
+  for (const auto& e : fs::directory_iterator(kExercises)) {
+    if (!fs::exists(e.path() / "exercise.txt") || e.path().filename().string()[0] == '_') continue;
+    ++exercises;
+    std::map<std::string, std::string> key;
+    std::istringstream m(slurp(e.path() / "exercise.txt"));
+    for (std::string l; std::getline(m, l);)
+      if (const auto c = l.find(':'); c != std::string::npos && l[0] != '#') key[l.substr(0, c)] = l.substr(c + 1);
+    ASSERT_TRUE(key.count("allowed")) << e.path();
+    std::set<std::string> allowed;
+    std::istringstream names(key["allowed"]);
+    for (std::string n; std::getline(names, n, ',');) allowed.insert(n.substr(n.find_first_not_of(' ')));
+    const std::string source = key["source"].substr(1), header = key["header"].substr(1);
+    std::vector<fs::path> code = {e.path() / source, e.path() / header, e.path() / "solution" / source};
+    for (const auto& w : fs::directory_iterator(e.path() / "wrong")) code.push_back(w.path() / source);
+    for (const auto& f : code)
+      for (const auto& h : includes(f)) EXPECT_TRUE(allowed.count(h)) << f << " includes " << h << ", not in allowed:";
+    std::set<std::string> seen;
+    std::vector<std::string> todo(allowed.begin(), allowed.end());
+    while (!todo.empty()) {
+      const std::string h = todo.back();
+      todo.pop_back();
+      if (!seen.insert(h).second) continue;
+      EXPECT_EQ(h.rfind("t2/kernel/", 0), 0u) << e.path().filename() << " allows " << h << " (through its includes)";
+      ASSERT_TRUE(fs::exists(kSource / "lib" / "include" / h)) << h;
+      for (const auto& i : includes(kSource / "lib" / "include" / h)) todo.push_back(i);
+    }
+  }
+  EXPECT_GE(exercises, 20);
 }
 
 TEST(GraderReport, ResultsJsonHasGradescopesShape) {

@@ -140,4 +140,62 @@ TEST(Release, AutograderBundleAndClassroomConfig) {
   EXPECT_FALSE(fs::exists(cls / "exercises" / "01-t2-plane" / "hidden"));
 }
 
+// The three gradings run one judge: `t2 grade` (what the instructor runs, and what these tests
+// run through grader_testing.hpp), the Gradescope bundle's run_autograder, and the Classroom
+// template's autograding command (t2 check, public tests). Each is run as released, on its own
+// copy of the exercise (T2_EXERCISES_DIR: the bundle's and the template's), with this build's
+// tool where the release would have built its own; all three give the same verdict on every test.
+TEST(Release, TheThreeGradingsRunOneJudge) {
+  TempDir t;
+  const fs::path sub = kExercises / "01-t2-plane" / "wrong" / "divide-by-w";  // some tests pass, some fail
+  const Results local = grade(kTool, "01", sub);
+  ASSERT_GT(local.score, 0);
+
+  // Gradescope: the bundle unpacked where run_autograder expects it (/autograder moved into t).
+  const fs::path ag = t.path / "autograder", zip = t.path / "bundle.zip";
+  ASSERT_EQ(run("'" + kTool + "' release autograder '" + zip.string() + "' --exercise 01").status, 0);
+  fs::create_directories(ag / "source");
+  ASSERT_EQ(run("cd '" + (ag / "source").string() + "' && unzip -q '" + zip.string() + "'").status, 0);
+  fs::create_directories(ag / "source" / "build" / "default" / "bin");
+  fs::create_symlink(kTool, ag / "source" / "build" / "default" / "bin" / "t2");
+  fs::create_directories(ag / "submission");
+  fs::copy_file(sub / "classify.cpp", ag / "submission" / "classify.cpp");
+  std::string script = slurp(ag / "source" / "run_autograder");
+  for (size_t at = 0; (at = script.find("/autograder/", at)) != std::string::npos; at += ag.string().size() + 1)
+    script.replace(at, 12, ag.string() + "/");
+  std::ofstream(ag / "run.sh") << script;
+  const Ran g = run("T2_EXERCISES_DIR='" + (ag / "source" / "exercises").string() + "' bash '" + (ag / "run.sh").string() + "'");
+  ASSERT_EQ(g.status, 0) << g.out;
+  const auto bundle = nlohmann::json::parse(slurp(ag / "results" / "results.json"));
+  EXPECT_EQ(bundle.at("score").get<double>(), local.score);
+  ASSERT_EQ(bundle.at("tests").size(), local.tests.size());
+  for (size_t i = 0; i < local.tests.size(); ++i) {
+    const auto& b = bundle.at("tests")[i];
+    EXPECT_EQ(b.at("name").get<std::string>(), local.tests[i].name);
+    EXPECT_EQ(b.at("score").get<double>(), local.tests[i].score) << local.tests[i].name;
+    EXPECT_EQ(b.at("output").get<std::string>(), local.tests[i].output) << local.tests[i].name;
+  }
+
+  // Classroom: the template's own command, in the template, with the submission in place.
+  const fs::path cls = t.path / "classroom";
+  ASSERT_EQ(run("'" + kTool + "' release classroom '" + cls.string() + "'").status, 0);
+  fs::copy_file(sub / "classify.cpp", cls / "exercises" / "01-t2-plane" / "classify.cpp", fs::copy_options::overwrite_existing);
+  fs::create_directories(cls / "build" / "default" / "bin");
+  fs::create_symlink(kTool, cls / "build" / "default" / "bin" / "t2");
+  std::string command;
+  const auto config = nlohmann::json::parse(slurp(cls / ".github" / "classroom" / "autograding.json"));
+  for (const auto& x : config.at("tests"))
+    if (x.at("name").get<std::string>().rfind("01-t2-plane:", 0) == 0) command = x.at("run").get<std::string>();
+  ASSERT_FALSE(command.empty());
+  const Ran c = run("cd '" + cls.string() + "' && T2_EXERCISES_DIR='" + (cls / "exercises").string() + "' " + command);
+  int public_tests = 0;
+  for (const auto& l : local.tests) {
+    if (l.visibility != "visible") continue;
+    ++public_tests;
+    const bool passed = l.score == l.max_score;
+    EXPECT_NE(c.out.find((passed ? "  passed  " : "  FAILED  ") + l.name), std::string::npos) << l.name << "\n" << c.out;
+  }
+  EXPECT_GE(public_tests, 1);
+}
+
 }  // namespace

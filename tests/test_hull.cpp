@@ -154,5 +154,22 @@ TEST(HullCgal, KernelAndTraceParameters) {
   EXPECT_EQ(rec.last, h);
 }
 
+// Quickhull divides at the point farthest from the chord, so on a circle (every point a
+// vertex) both halves shrink and it makes O(n log n) orientation tests. Dividing at the nearest
+// instead (the sign of the direction reversed, a bug chapter 16's counts found) still gives the
+// right hull, through the fallbacks, but with about n² tests: 16 million here.
+TEST(Hull, QuickhullDividesAtTheFarthestPoint) {
+  gen::Options o;
+  o.n = 4096;
+  o.seed = 16;
+  const auto P = gen::points(Kind::circle, o);
+  CountingTraits::calls = 0;
+  const auto h = convex_hull<CountingTraits>(P, HullAlgorithm::quickhull);
+  const long calls = CountingTraits::calls;
+  EXPECT_TRUE(same_cycle(at(P, h), at(P, convex_hull(P, HullAlgorithm::monotone))));
+  EXPECT_GT(h.size(), 4000u);       // nearly every point is a vertex (a few are repeated)
+  EXPECT_LT(calls, 8 * 4096 * 12);  // 8 n log2 n
+}
+
 }  // namespace
 }  // namespace t2

@@ -224,33 +224,27 @@ TEST(Intersect, AgreesWithCgal) {
     S = gen::segments(o);
     EXPECT_EQ(cartesian(intersections_sweep(S)), testing::cgal::intersection_points_2(S));
   }
-  std::mt19937_64 rng(7);
-  std::size_t missed_by_cgal = 0;
-  for (int round = 0; round < 20; ++round) {
-    // CGAL's sweep takes no zero-length segment (it crashed on them); and overlapping pairs are
-    // left out too, whose reporting conventions may differ.
-    S.clear();
-    for (const Segment& s : grid_segments(rng, 30, 5)) {
-      if (s.is_degenerate()) continue;
-      bool overlaps = false;
-      for (const Segment& t : S)
-        overlaps |= zero(cross(cross(triple(s.source()), triple(s.target())),
-                               cross(triple(t.source()), triple(t.target())))) &&
-                    meet_oracle(s, t);
-      if (!overlaps) S.push_back(s);
-    }
-    check_answer(S, intersections_sweep(S));  // ours is right by the rational oracle
-    const auto ours = cartesian(intersections_sweep(S)), theirs = testing::cgal::intersection_points_2(S);
-    std::vector<std::array<Rational, 2>> only_ours, only_theirs;
-    std::set_difference(ours.begin(), ours.end(), theirs.begin(), theirs.end(), std::back_inserter(only_ours));
-    std::set_difference(theirs.begin(), theirs.end(), ours.begin(), ours.end(), std::back_inserter(only_theirs));
-    // Every point CGAL finds, t2 finds. The converse fails on some of these sets (rounds 10
-    // and 16: e.g. the crossing (3, 12/5) of [2, 6, 2] -> [1, 3, 4] and [1, 5, 2] -> [1, 0, 3],
-    // which the rational oracle above confirms), not yet explained: recorded, not asserted.
-    EXPECT_TRUE(only_theirs.empty()) << round << ": " << only_theirs.size() << " points only CGAL's";
-    missed_by_cgal += only_ours.size();
-  }
-  RecordProperty("points_only_t2_finds", static_cast<int>(missed_by_cgal));
+}
+
+// CGAL 5.5.1 (Debian 12) is not an oracle on degenerate grids. Its sweep breaks its own status
+// line's precondition (Multiset.h: "comp_f(object, parentP->object) != SMALLER", seen with
+// CGAL's checks on, for Epeck and for Cartesian<Gmpq> alike) on these four segments: three of
+// them cross at (5/2, 5/2) and the fourth ends at (3, 2), inside the first. Built with NDEBUG it
+// goes on, leaks the status line's nodes (LeakSanitizer's report sent us here) and reports three
+// points, not four: (3, 2) is missed. The degenerate grids are therefore checked against the
+// rational oracle and brute force only (SweepEqualsBruteOnDegenerateGrids), and this input stays
+// as the regression test for the point CGAL misses; CGAL is not called on it.
+TEST(Intersect, TheEndpointCgalMissesBesideATriplePoint) {
+  const std::vector<Segment> S = {{Point(1, 2, 3), Point(1, 5, 0)},
+                                  {Point(1, 5, 2), Point(1, 0, 3)},
+                                  {Point(1, 3, 4), Point(1, 2, 1)},
+                                  {Point(1, 1, 3), Point(1, 3, 2)}};
+  const auto out = intersections_sweep(S);
+  check_answer(S, out);
+  std::vector<std::string> got;
+  for (const auto& p : out) got.push_back(to_line(p));
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, (std::vector<std::string>{"1 3 2  0 3", "2 5 5  0 1 2", "3 5 8  1 3", "7 17 16  2 3"}));
 }
 
 TEST(Intersect, TheOneAlgorithmEntryAndTheLineFormat) {

@@ -39,8 +39,13 @@ TEST(Registry, EveryEntryIsComplete) {
     EXPECT_FALSE(a.summary.empty());
     EXPECT_FALSE(a.title.empty());
     EXPECT_TRUE(a.record || a.time) << "neither animated nor timed: nothing reads it";
-    EXPECT_EQ(bool(a.run), pr->space == 2) << "a plane algorithm's answer is a scene";
-    if (a.record) EXPECT_EQ(pr->space, 2);
+    if (a.run) {
+      EXPECT_EQ(pr->input, reg::Input::plane) << "only a plane algorithm's answer is a scene";
+    }
+    if (a.record) {  // an animation's last step is checked against the plain run's scene
+      EXPECT_EQ(pr->input, reg::Input::plane);
+      EXPECT_TRUE(a.run);
+    }
     for (const auto& p : a.peers) {
       const reg::Algorithm* other = reg::find(p);
       const reg::Peer* peer = reg::find_peer(p);
@@ -54,7 +59,7 @@ TEST(Registry, EveryEntryIsComplete) {
     for (const auto& pr : p.problems) EXPECT_NE(reg::find_problem(pr), nullptr) << p.name << ": " << pr;
   }
   // what `t2 hull`, `t2 triangulate`, `t2 delaunay` and `t2 hull3d` run has the command's name
-  for (const char* name : {"hull", "triangulate", "delaunay", "hull3d", "layers"}) EXPECT_NE(reg::find(name), nullptr);
+  for (const char* name : {"hull", "triangulate", "delaunay", "hull3d", "layers", "intersect", "voronoi"}) EXPECT_NE(reg::find(name), nullptr);
 }
 
 // The vertices of each polygon of a scene, as points.
@@ -123,7 +128,9 @@ TEST_F(RegistryCli, TheHelpTextsListTheRegistry) {
   EXPECT_TRUE(has(bench.out, "the t2 algorithm: " + reg::words(timed))) << bench.out;
   for (const auto& a : reg::all()) {
     EXPECT_EQ(has(animate.out, a.name + " ") && has(animate.out, a.summary), bool(a.record)) << a.name;
-    if (a.time) EXPECT_TRUE(has(bench.out, a.summary)) << a.name;
+    if (a.time) {
+      EXPECT_TRUE(has(bench.out, a.summary)) << a.name;
+    }
   }
   for (const auto& p : reg::peers()) EXPECT_TRUE(has(bench.out, p.summary)) << p.name;
   for (const char* gone : {"merge-hull", "  sweep "}) EXPECT_FALSE(has(animate.out, gone)) << gone;  // old names
@@ -139,7 +146,8 @@ TEST_F(RegistryCli, TheWorkerRunsEveryRegisteredImplementation) {
   for (const auto& p : reg::peers())
     for (const auto& pr : p.problems) by_problem[pr].push_back({p.name, p.exact});
   for (const auto& [problem, impls] : by_problem) {
-    const std::string input = reg::find_problem(problem)->space == 3 ? "cube" : "disk";
+    const reg::Input kind = reg::find_problem(problem)->input;
+    const std::string input = kind == reg::Input::space ? "cube" : kind == reg::Input::segments ? "segments" : "disk";
     std::set<std::string> exact_sizes;
     for (const auto& [name, exact] : impls) {
       const Shell r = shell(worker.string() + " " + problem + " " + name + " " + input + " 300 7");

@@ -20,6 +20,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/hull/convex_hull.hpp"
 #include "t2/kernel/orient.hpp"
+#include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/triangulate.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"
 
@@ -62,7 +63,7 @@ std::string certify(const TriangulationT2& r) {
         if (P[x] == antipode(P[y])) {
           ++pairs;
           bool recorded = false;
-          for (const AntipodalEdge& l : r.lunes) recorded = recorded || (l.z == x && l.nz == y) || (l.z == y && l.nz == x);
+          for (const AntipodalEdge& l : r.tr.antipodal_edges()) recorded = recorded || (l.z == x && l.nz == y) || (l.z == y && l.nz == x);
           if (!recorded) return "antipodal edge without a bisector in face " + std::to_string(t);
         }
       if (pairs > 1) return "face with two antipodal pairs";
@@ -117,7 +118,7 @@ void expect_tiling(const TriangulationT2& r, const std::vector<Point>& qs) {
     for (Index t = 0; t < tr.size(); ++t) {
       if (tr.is_infinite(t) || face_kind(tr, t) == FaceKind::flat) continue;
       Sign s[3];
-      for (int i = 0; i < 3; ++i) s[i] = side_of_edge(tr, r.lunes, t, i, q);
+      for (int i = 0; i < 3; ++i) s[i] = side_of_edge(tr, t, i, q);
       if (s[0] < 0 || s[1] < 0 || s[2] < 0) continue;
       if (s[0] == 0 || s[1] == 0 || s[2] == 0) boundary = true;
       else ++count;
@@ -154,7 +155,7 @@ void expect_certified(const std::vector<Point>& P, std::size_t samples = 300,
     for (Index t = 0; t < r.tr.size(); ++t) {
       if (r.tr.is_infinite(t) || face_kind(r.tr, t) == FaceKind::flat) continue;
       int pos = 0;
-      for (int i = 0; i < 3; ++i) pos += side_of_edge(r.tr, r.lunes, t, i, P[v]) > 0;
+      for (int i = 0; i < 3; ++i) pos += side_of_edge(r.tr, t, i, P[v]) > 0;
       EXPECT_LT(pos, 3) << v;
     }
 }
@@ -197,7 +198,7 @@ TEST(TriangulateT2, RandomSidesAndAntipodes) {
     try {
       expect_certified(P, 100);
       expect_certified(P, 50, InsertionOrder::input);
-      lunes += !triangulate_t2(P, InsertionOrder::input).lunes.empty();
+      lunes += !triangulate_t2(P, InsertionOrder::input).tr.antipodal_edges().empty();
     } catch (const Undefined& e) {
       // only the two cases of triangulate_t2.hpp, checked below on hand-made input
       const std::string w = e.what();
@@ -220,7 +221,14 @@ std::set<std::set<Index>> faces(const Triangulation& tr) {
 
 int count_kind(const Triangulation& tr, FaceKind k) {
   int c = 0;
-  for (Index t = 0; t < tr.size(); ++t) c += !tr.is_infinite(t) && face_kind(tr, t) == k;
+  for (Index t = 0; t < tr.size(); ++t) c += face_kind(tr, t) == k;
+  return c;
+}
+
+/// The faces with orient > 0 (front, back, band or with a vertex on Ω).
+int count_proper(const Triangulation& tr) {
+  int c = 0;
+  for (Index t = 0; t < tr.size(); ++t) c += is_proper(face_kind(tr, t));
   return c;
 }
 
@@ -234,17 +242,17 @@ TEST(TriangulateT2, Figure518AntipodeOfAHullVertex) {
   ASSERT_EQ(certify(r), "");
   EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}));
   EXPECT_EQ(count_kind(r.tr, FaceKind::lune), 2);
-  ASSERT_EQ(r.lunes.size(), 1u);
-  EXPECT_EQ(r.lunes[0].z, 0u);
-  EXPECT_EQ(r.lunes[0].nz, 3u);
-  EXPECT_EQ(r.lunes[0].u, 2u);
-  EXPECT_EQ(r.lunes[0].w, 1u);
+  ASSERT_EQ(r.tr.antipodal_edges().size(), 1u);
+  EXPECT_EQ(r.tr.antipodal_edges()[0].z, 0u);
+  EXPECT_EQ(r.tr.antipodal_edges()[0].nz, 3u);
+  EXPECT_EQ(r.tr.antipodal_edges()[0].u, 2u);
+  EXPECT_EQ(r.tr.antipodal_edges()[0].w, 1u);
   // on the bisector: 0; just beside it, the side of w (left of z -> ¬z) or of u
-  EXPECT_EQ(side_of_antipodal_edge(P, r.lunes[0], Point::cartesian(-2, -1)), ZERO);
-  EXPECT_EQ(side_of_antipodal_edge(P, r.lunes[0], Point(0, -2, -1)), ZERO);
-  EXPECT_EQ(side_of_antipodal_edge(P, r.lunes[0], Point(-1, -2, -1)), ZERO);
-  EXPECT_EQ(side_of_antipodal_edge(P, r.lunes[0], Point::cartesian(-2, -1.001)), POSITIVE);
-  EXPECT_EQ(side_of_antipodal_edge(P, r.lunes[0], Point::cartesian(-2, -0.999)), NEGATIVE);
+  EXPECT_EQ(side_of_antipodal_edge(P, r.tr.antipodal_edges()[0], Point::cartesian(-2, -1)), ZERO);
+  EXPECT_EQ(side_of_antipodal_edge(P, r.tr.antipodal_edges()[0], Point(0, -2, -1)), ZERO);
+  EXPECT_EQ(side_of_antipodal_edge(P, r.tr.antipodal_edges()[0], Point(-1, -2, -1)), ZERO);
+  EXPECT_EQ(side_of_antipodal_edge(P, r.tr.antipodal_edges()[0], Point::cartesian(-2, -1.001)), POSITIVE);
+  EXPECT_EQ(side_of_antipodal_edge(P, r.tr.antipodal_edges()[0], Point::cartesian(-2, -0.999)), NEGATIVE);
   expect_tiling(r, queries(400, 5));
   // A point just beside the bisector splits the lune on its side: (q, w, z) on w's side.
   for (double y : {-1.001, -0.999}) {
@@ -278,7 +286,7 @@ TEST(TriangulateT2, Figure520LunesDisappear) {
     const TriangulationT2 r = triangulate_t2(P, seed_order);
     ASSERT_EQ(certify(r), "") << to_string(s);
     EXPECT_EQ(faces(r.tr), (std::set<std::set<Index>>{{4, 0, 1}, {4, 1, 3}, {4, 3, 2}, {4, 2, 0}, {0, 1, 2}, {1, 2, 3}}));
-    EXPECT_EQ(count_kind(r.tr, FaceKind::proper), 6) << to_string(s);
+    EXPECT_EQ(count_proper(r.tr), 6) << to_string(s);
     expect_tiling(r, queries(300, 7));
   }
   // after figure 5.19 the lunes go, the flat face stays (it has no interior to insert into)
@@ -356,8 +364,8 @@ TEST(TriangulateT2, DuplicatesOfAnAntipodalPair) {
       const TriangulationT2 r = triangulate_t2(P, how);
       ASSERT_EQ(certify(r), "");
       EXPECT_EQ(r.tr.duplicates().size(), 4u);
-      ASSERT_EQ(r.lunes.size(), 1u);
-      const Index a = r.lunes[0].z, b = r.lunes[0].nz;
+      ASSERT_EQ(r.tr.antipodal_edges().size(), 1u);
+      const Index a = r.tr.antipodal_edges()[0].z, b = r.tr.antipodal_edges()[0].nz;
       EXPECT_TRUE(P[a] == antipode(P[b]));
       for (Index v = 0; v < P.size(); ++v) {  // the vertices z and ¬z: the smallest equal indices
         if (P[v] == P[a]) {

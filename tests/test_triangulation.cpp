@@ -183,6 +183,7 @@ Arrays arrays(const Triangulation& tr) {
 Triangulation with(const Triangulation& tr, Arrays a) {
   Triangulation out(tr.points());
   out.assign(std::move(a.v), std::move(a.n));
+  out.set_antipodal_edges(tr.antipodal_edges());
   return out;
 }
 
@@ -203,6 +204,12 @@ TEST(Triangulation, ValidateAcceptsTheFlatFacesOfT2AndNothingBroken) {
   ASSERT_NE(flat, Triangulation::none);
   EXPECT_EQ(tr.validate(), "");
   EXPECT_EQ(with(tr, arrays(tr)).validate(), "");
+  // invariant 6: the antipodal edge z – ¬z without its record, or with two
+  Triangulation bare = with(tr, arrays(tr));
+  bare.set_antipodal_edges({});
+  EXPECT_TRUE(has(bare.validate(), "has 0 records")) << bare.validate();
+  bare.set_antipodal_edges({tr.antipodal_edges()[0], tr.antipodal_edges()[0]});
+  EXPECT_TRUE(has(bare.validate(), "has 2 records")) << bare.validate();
   // every face turned round: slots 1 and 2 exchanged, in the vertices and in the twins' slots
   const Arrays a = arrays(tr);
   Arrays mirror = a;

@@ -82,14 +82,14 @@ TEST_F(VoronoiCli, EqualsTheLibrary) {
   std::vector<Point> pts;
   for (const ScenePoint& q : read_scene(dir_ / "pts.t2").points) pts.push_back(q.point);
   const VoronoiDiagram vd = voronoi(pts);
-  ASSERT_EQ(p.coords.size(), vd.vertices.size());
+  ASSERT_EQ(p.coords.size(), vd.size());
   ASSERT_EQ(p.edges.size(), vd.edges.size());
-  for (std::size_t v = 0; v < vd.vertices.size(); ++v) {
+  for (VoronoiDiagram::Index v = 0; v < vd.size(); ++v) {
     std::istringstream c(p.coords[v]);
     std::string w, x, y;
     c >> w >> x >> y;
-    EXPECT_EQ(ExactPoint(Integer(w), Integer(x), Integer(y)), vd.vertices[v]);
-    EXPECT_EQ(p.sites[v], std::vector<int>(vd.vertex_sites[v].begin(), vd.vertex_sites[v].end()));
+    EXPECT_EQ(ExactPoint(Integer(w), Integer(x), Integer(y)), vd.vertex(v));
+    EXPECT_EQ(p.sites[v], std::vector<int>(vd.vertex_sites(v).begin(), vd.vertex_sites(v).end()));
   }
   for (std::size_t e = 0; e < vd.edges.size(); ++e)
     EXPECT_EQ(p.edges[e], (std::array<int, 4>{int(vd.edges[e].a), int(vd.edges[e].b), int(vd.edges[e].s),

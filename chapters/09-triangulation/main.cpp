@@ -4,6 +4,7 @@
 // the sweep's; the figures of the chapter in both models (seed 000, figures 5.12-5.20 redrawn).
 #include <t2/t2.hpp>
 #include <t2/gen/generate.hpp>
+#include <t2/triangulation/antipodal_edge.hpp>
 #include <t2/triangulation/delaunay.hpp>
 #include <t2/triangulation/triangulate.hpp>
 #include <t2/triangulation/triangulate_t2.hpp>
@@ -168,7 +169,11 @@ void antipodal_figures(const std::filesystem::path& dir, int& written, int& coun
     for (Index t = 0; t < tr.size(); ++t) {
       const Index a = tr.vertex(t, 0), b = tr.vertex(t, 1), c = tr.vertex(t, 2);
       switch (t2::face_kind(tr, t)) {
-        case t2::FaceKind::proper: f.add(std::vector<Point>{P[a], P[b], P[c]}, proper); break;
+        case t2::FaceKind::infinite: break;  // none here: the antipode destroys the hull
+        case t2::FaceKind::front:
+        case t2::FaceKind::back:
+        case t2::FaceKind::band:
+        case t2::FaceKind::omega: f.add(std::vector<Point>{P[a], P[b], P[c]}, proper); break;
         case t2::FaceKind::flat:
           for (auto [x, y] : {std::pair{a, b}, {b, c}, {c, a}}) f.segment(P[x], P[y], dr::Style().color(pal::orange).width(3));
           break;
@@ -177,7 +182,7 @@ void antipodal_figures(const std::filesystem::path& dir, int& written, int& coun
           Index x = a, y = b, k = c;
           if (P[b] == t2::antipode(P[c])) x = b, y = c, k = a;
           if (P[c] == t2::antipode(P[a])) x = c, y = a, k = b;
-          const t2::AntipodalEdge& e = r.lunes.front();
+          const t2::AntipodalEdge& e = tr.antipodal_edges().front();
           const Point m = bisector_midpoint(P[e.z], P[e.u], P[e.w]);
           const bool at_w = t2::side_of_antipodal_edge(P, e, P[k]) > 0;  // green, else purple
           f.add(std::vector<Point>{P[x], m, P[y], P[k]},  // x -> m -> y: the half circle

@@ -62,6 +62,13 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i, ++total)
     if (::open(argv[i], O_RDONLY) < 0) ++unread;
   std::printf("secrets_unreadable=%d/%d\n", unread, total);
+  // /dev is a tmpfs of the sandbox: read-only, or it would be memory no limit bounds (issue 29).
+  bool dev_writable = false;
+  for (const char* f : {"/dev/.t2-probe", "/dev/shm/.t2-probe"}) {
+    const int d = ::open(f, O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (d >= 0) dev_writable = true, ::close(d), ::unlink(f);
+  }
+  std::printf("write_dev=%s\n", dev_writable ? "yes" : "no");
   struct statvfs v{};
   if (::statvfs("/tmp", &v) == 0) std::printf("tmp_mb=%llu\n", static_cast<unsigned long long>(v.f_blocks) * v.f_frsize >> 20);
   rlimit np{};

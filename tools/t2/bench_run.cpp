@@ -15,11 +15,14 @@ const std::vector<std::string>& input_names() {
   static const std::vector<std::string> names = {"uniform",  "disk",     "polygon-interior", "normal",
                                                  "clustered", "kuzmin",  "circle",           "segment",
                                                  "boundary", "grid",     "duplicates", "cube",
-                                                 "sphere"};
+                                                 "sphere",   "segments"};
   return names;
 }
 
-bool is_3d_input(const std::string& input) { return input == "cube" || input == "sphere"; }
+t2cli::algorithms::Input input_of(const std::string& input) {
+  using t2cli::algorithms::Input;
+  return input == "cube" || input == "sphere" ? Input::space : input == "segments" ? Input::segments : Input::plane;
+}
 
 std::optional<std::filesystem::path> find_worker() {
   namespace fs = std::filesystem;

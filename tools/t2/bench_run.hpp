@@ -11,12 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/registry.hpp"
+
 namespace t2bench {
 
 /// The inputs (t2 gen kinds with front points, and clustered; cube and sphere for hull3d).
 const std::vector<std::string>& input_names();
 /// True for the inputs of R³ (cube, sphere), the only ones of hull3d.
-bool is_3d_input(const std::string& input);
+t2cli::algorithms::Input input_of(const std::string& input);
 
 /// One measurement.
 struct Measurement {

@@ -8,36 +8,6 @@
 
 namespace t2bench {
 
-bool fit_defined(std::span<const double> n, std::span<const double> t) {
-  std::set<double> sizes;
-  for (std::size_t i = 0; i < n.size() && i < t.size(); ++i)
-    if (n[i] > 0 && t[i] > 0) sizes.insert(n[i]);
-  return sizes.size() >= 2;
-}
-
-Fit fit_power_law(std::span<const double> n, std::span<const double> t) {
-  Fit f;
-  double sx = 0, sy = 0;
-  std::vector<std::pair<double, double>> xy;
-  for (std::size_t i = 0; i < n.size() && i < t.size(); ++i) {
-    if (n[i] <= 0 || t[i] <= 0) continue;
-    xy.emplace_back(std::log(n[i]), std::log(t[i]));
-    sx += xy.back().first;
-    sy += xy.back().second;
-  }
-  f.points = xy.size();
-  if (!fit_defined(n, t)) return f;
-  const double mx = sx / double(xy.size()), my = sy / double(xy.size());
-  double sxx = 0, sxy = 0;  // centred sums: no cancellation between large logs
-  for (const auto& [x, y] : xy) {
-    sxx += (x - mx) * (x - mx);
-    sxy += (x - mx) * (y - my);
-  }
-  f.exponent = sxy / sxx;
-  f.constant = std::exp(my - f.exponent * mx);
-  return f;
-}
-
 std::vector<std::size_t> log_steps(std::size_t n1, std::size_t n2, int per_decade) {
   if (n1 < 1 || n2 < n1 || per_decade < 1) throw std::invalid_argument("log_steps: need 1 <= n1 <= n2, per_decade >= 1");
   std::vector<std::size_t> out{n1};

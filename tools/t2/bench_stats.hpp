@@ -1,6 +1,7 @@
 #pragma once
-// The arithmetic of `t2 bench` (cmd_bench.cpp): the sizes of a range, medians, and the growth
-// exponent fitted to the measurements. Pure functions, tested in tests/test_bench.cpp.
+// The arithmetic of `t2 bench` (cmd_bench.cpp): the sizes of a range and medians (the growth
+// exponent is fitted by t2::draw::fit_power_law, <t2/draw/loglog.hpp>). Pure functions, tested in
+// tests/test_bench.cpp.
 
 #include <cstddef>
 #include <span>
@@ -8,20 +9,6 @@
 #include <vector>
 
 namespace t2bench {
-
-/// A power law t ≈ c · n^exponent fitted to measurements.
-struct Fit {
-  double exponent = 0;  ///< the growth exponent: the slope of log t against log n
-  double constant = 0;  ///< c, the time at n = 1 of the fitted line
-  std::size_t points = 0;  ///< how many measurements entered the fit (those with t > 0)
-};
-
-/// Least squares on (log n, log t) over the measurements with n > 0 and t > 0. With fewer than
-/// two distinct n the exponent is undefined: `points` tells (the caller prints nothing then).
-Fit fit_power_law(std::span<const double> n, std::span<const double> t);
-
-/// True when the fit has at least two distinct sizes.
-bool fit_defined(std::span<const double> n, std::span<const double> t);
 
 /// The sizes of `--range N1..N2`: N1, then sizes growing by the factor 10^(1/per_decade)
 /// (rounded to integers, strictly increasing), ending exactly at N2.

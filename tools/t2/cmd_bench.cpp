@@ -1,7 +1,7 @@
 // t2 bench: one harness for every benchmark of the course. An algorithm of t2, alone or against
 // peers (CGAL, qhull, another t2 algorithm, the same code on other predicates), over a range of
 // n on a chosen generator: wall and CPU time and peak memory per run, a table on stdout, the
-// fitted growth exponent, and a log-log plot (bench_plot.cpp). Every measurement runs in a fresh
+// fitted growth exponent, and a log-log plot (<t2/draw/loglog.hpp>). Every measurement runs in a fresh
 // process of the benchmark worker (bench/t2_bench_worker.cpp: it links CGAL and qhull, this tool
 // never does), so peak memories never add up and one crash loses one run.
 #include <CLI/CLI.hpp>
@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "algorithms/registry.hpp"
-#include "bench_plot.hpp"
 #include "bench_progress.hpp"
 #include "bench_run.hpp"
 #include "bench_stats.hpp"
 #include "command.hpp"
 #include "t2/kernel/io.hpp"
+#include <t2/draw/loglog.hpp>
 
 namespace t2cli {
 namespace {
@@ -148,14 +148,16 @@ int bench(Options o) {
   const std::string problem = algo->problem;
   const algorithms::Problem* pr = algorithms::find_problem(problem);
   if (pr == nullptr) throw std::logic_error("t2 bench " + o.algo + ": its problem " + problem + " is not registered");
-  const bool space = pr->space == 3;
-  if (o.input.empty()) o.input = space ? "cube" : "uniform";
+  using algorithms::Input;
+  if (o.input.empty()) o.input = pr->input == Input::space ? "cube" : pr->input == Input::segments ? "segments" : "uniform";
   const auto& inputs = input_names();
   if (std::find(inputs.begin(), inputs.end(), o.input) == inputs.end())
     throw UsageError(fmt::format("--input {}: one of {}", o.input, fmt::join(inputs, ", ")));
-  if (is_3d_input(o.input) != space)
+  if (input_of(o.input) != pr->input)
     throw UsageError(fmt::format("--input {}: {} takes {}", o.input, o.algo,
-                                 space ? "points of R^3 (cube, sphere)" : "points of the plane (not cube, sphere)"));
+                                 pr->input == Input::space      ? "points of R^3 (cube, sphere)"
+                                 : pr->input == Input::segments ? "segments (segments)"
+                                                                : "points of the plane (not cube, sphere, segments)"));
   const std::vector<std::size_t> ns = sizes(o);
   if (ns.front() < 1) throw UsageError("--n must be at least 1");
   Progress::Setting shown{};
@@ -184,7 +186,7 @@ int bench(Options o) {
   fmt::print("# t2 bench {} --input {} --seed {}: medians of {} run(s) each, every run in its own process; "
              "load average {:.1f} on {} cores when it started\n",
              o.algo, o.input, o.seed, o.repeat, load_average(), ::sysconf(_SC_NPROCESSORS_ONLN));
-  fmt::print("# size: hull vertices, layers or finite triangles; peak: the worker's peak RSS (input included); run B/pt: "
+  fmt::print("# size: hull vertices, layers, finite triangles or intersection points; peak: the worker's peak RSS (input included); run B/pt: "
              "peak above the input, per point; ratio: {} CPU time / this row's\n",
              o.algo);
   std::size_t name_width = 10;  // the first column fits the longest name ("layers-graham")
@@ -207,20 +209,20 @@ int bench(Options o) {
     csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.0f},{:.0f}\n", r.impl->name, r.n, r.size, r.wall, r.cpu, r.peak_kb,
                        r.input_kb);
   }
-  std::vector<Series> series;
+  std::vector<t2::draw::Series> series;
   std::vector<std::string> growth;
   for (const Impl* i : run) {
-    Series s{i->name, {}, {}};
+    t2::draw::Series s{i->name, {}, {}};
     for (const Row& r : rows)
       if (r.impl == i) s.n.push_back(double(r.n)), s.t.push_back(r.cpu);
-    if (fit_defined(s.n, s.t)) growth.push_back(fmt::format("{} n^{:.2f}", i->name, fit_power_law(s.n, s.t).exponent));
+    if (t2::draw::fit_defined(s.n, s.t)) growth.push_back(fmt::format("{} n^{:.2f}", i->name, t2::draw::fit_power_law(s.n, s.t).exponent));
     series.push_back(std::move(s));
   }
   if (!growth.empty())
     fmt::print("growth (least squares on log cpu time against log n): {}\n", fmt::join(growth, ", "));
   for (const auto& n : notes) fmt::print("note: {} (an inexact peer)\n", n);
   if (!o.plot.empty())
-    t2::write_file_atomically(o.plot, plot_svg(series, fmt::format("t2 bench {}: CPU time, input {}", o.algo, o.input),
+    t2::write_file_atomically(o.plot, t2::draw::loglog_svg(series, fmt::format("t2 bench {}: CPU time, input {}", o.algo, o.input),
                                                "CPU seconds (log scale)"));
   if (!o.csv.empty()) t2::write_file_atomically(o.csv, csv);
   for (const auto& d : disagreements) fmt::print(stderr, "t2 bench: ANSWERS DIFFER: {}\n", d);
@@ -232,7 +234,7 @@ std::string catalogue() {
   std::string s = "Algorithms (ALGO; each is also a peer of the others of its problem) and peers (--vs):\n";
   std::vector<std::string> defaults;
   for (const auto& pr : algorithms::problems()) {
-    s += fmt::format(" {} ({} input; size: {}):\n", pr.name, pr.space == 3 ? "R^3" : "T2", pr.size_word);
+    s += fmt::format(" {} ({} input; size: {}):\n", pr.name, pr.input == algorithms::Input::space ? "R^3" : pr.input == algorithms::Input::segments ? "segments" : "T2", pr.size_word);
     for (const auto* a : algorithms::timed())
       if (a->problem == pr.name) {
         s += fmt::format("  {:<15} {}\n", a->name, a->summary);

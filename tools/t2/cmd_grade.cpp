@@ -20,7 +20,7 @@ struct Options {
   std::optional<std::string> results, root;
   int overall_limit = 900, compile_limit = 120, time_limit = 0;
   std::string visibility = "hidden";
-  bool quiet = false;
+  bool quiet = false, unsafe = false;
 };
 
 int grade(const Options& o) {
@@ -31,6 +31,7 @@ int grade(const Options& o) {
   opt.overall_limit = o.overall_limit;
   opt.compile_limit = o.compile_limit;
   opt.time_limit = o.time_limit;
+  opt.unsafe = o.unsafe;
   const auto rep = t2grader::run_exercise(ex, sub, opt);
   if (o.results) t2::write_file_atomically(*o.results, t2grader::results_json(rep, o.visibility));
   if (!o.quiet) fmt::print("{}", t2grader::grade_summary(rep));
@@ -64,6 +65,9 @@ Action setup(CLI::App& app) {
       ->check(CLI::IsMember({"hidden", "after_due_date"}));
   app.add_option("--exercises", o->root, "the exercises folder")->type_name("DIR");
   app.add_flag("--quiet", o->quiet, "print no summary");
+  app.add_flag("--unsafe", o->unsafe,
+               "grade even without root, where no cgroup bounds the memory and CPU time of the\n"
+               "submission's whole process tree (per-process limits only)");
   app.footer("Exit status: 0 graded (whatever the score), 2 bad usage or a broken exercise.");
   return [o] { return grade(*o); };
 }

@@ -37,10 +37,10 @@ t2::ExactPoint reduced(const t2::ExactPoint& v) {
 
 std::string listing(const t2::VoronoiDiagram& vd) {
   std::string out;
-  for (std::size_t v = 0; v < vd.vertices.size(); ++v) {
-    const t2::ExactPoint p = reduced(vd.vertices[v]);
+  for (Index v = 0; v < vd.size(); ++v) {
+    const t2::ExactPoint p = reduced(vd.vertex(v));
     out += fmt::format("vertex {} {} {} ", p.w().get_str(), p.x().get_str(), p.y().get_str());
-    for (Index s : vd.vertex_sites[v]) out += fmt::format(" {}", s);
+    for (Index s : vd.vertex_sites(v)) out += fmt::format(" {}", s);
     out += '\n';
   }
   for (const auto& e : vd.edges) out += fmt::format("edge {} {}  {} {}\n", e.a, e.b, e.s, e.t);
@@ -53,7 +53,7 @@ std::string listing(const t2::VoronoiDiagram& vd) {
 void draw_edge(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd, const t2::VoronoiDiagram::Edge& e,
                t2::Scene& s) {
   const t2::SceneStyle st = style_of("color=red width=2 layer=1");
-  const t2::ExactPoint &a = vd.vertices[e.a], &b = vd.vertices[e.b];
+  const t2::ExactPoint a = vd.vertex(e.a), b = vd.vertex(e.b);
   if (a == t2::antipode(b)) return;  // either half of the bisector: not drawn
   const t2::ExactPoint m(t2::Integer(a.w() + b.w()), t2::Integer(a.x() + b.x()), t2::Integer(a.y() + b.y()));
   bool other = false;
@@ -78,8 +78,8 @@ void draw_edge(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd, co
 t2::Scene answer(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd) {
   t2::Scene s;
   for (const auto& e : vd.edges) draw_edge(P, vd, e, s);
-  for (const t2::ExactPoint& v : vd.vertices)
-    s.points.push_back(scene_point(t2::to_double(v), style_of("color=red marker=dot layer=2")));
+  for (Index v = 0; v < vd.size(); ++v)
+    s.points.push_back(scene_point(t2::to_double(vd.vertex(v)), style_of("color=red marker=dot layer=2")));
   for (auto [i, j] : vd.lines) {
     const t2::Point &a = P[i], &b = P[j];
     t2::Point p(0, 1, 0), q(0, 0, 1);  // sites on different sides: Ω
@@ -109,7 +109,7 @@ int run(const Options& o) {
                scene.points[dropped].line, dropped, kept, scene.points[kept].line);
   write_answer(o.drawing, scene, answer(P, vd),
                fmt::format("t2 voronoi {}: {} vertices, {} edges (draw them over their input: t2 draw FILE THIS)",
-                           scene.name, vd.vertices.size(), vd.edges.size()));
+                           scene.name, vd.size(), vd.edges.size()));
   fmt::print("{}", listing(vd));
   return kOk;
 }

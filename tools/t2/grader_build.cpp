@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "grader_allow.hpp"
 #include "grader_elf.hpp"
 #include "process.hpp"
 
@@ -28,7 +29,7 @@ namespace t2grader {
 
 namespace {
 
-fs::path lib_include_dir() { return fs::path(T2_SOURCE_DIR) / "lib" / "include"; }
+fs::path lib_include_dir() { return library_include_dir(); }
 
 bool sanitized_tool() {
 #if defined(__SANITIZE_ADDRESS__)
@@ -132,6 +133,43 @@ std::vector<std::string> link_libraries(bool with_gtest) {
   return l;
 }
 
+// The driver's, the same in both builds: GMP linked in (its shared library is not in the
+// driver's sandbox), the rest shared (there is no static fmt on Debian). A sanitized tool's
+// kernel archive needs the sanitizers' runtimes: linked in statically too, so that the driver
+// needs no shared library the plain build's does not (a dynamic libasan brought the host's /usr
+// into the sandbox, and with it libgmp.so for dlopen: issue 29, break 3).
+std::vector<std::string> driver_libraries() {
+  std::vector<std::string> l;
+  if (sanitized_tool()) l = {"-fsanitize=address,undefined", "-static-libasan", "-static-libubsan"};
+  l.insert(l.end(), {library_archive().string(), "-Wl,-Bstatic", "-lgmpxx", "-lgmp", "-Wl,-Bdynamic", "-lfmt", "-lpthread"});
+  return l;
+}
+
+// The shared libraries of a driver (see TrustedParts::runtime), read by ldd from a trusted
+// program linked with the same shared libraries (the checker), allowed by name: never GMP,
+// never a sanitizer's runtime (the driver has both linked in).
+std::vector<std::pair<fs::path, fs::path>> driver_runtime(const fs::path& checker) {
+  std::vector<std::pair<fs::path, fs::path>> r;
+  static const char* const kAllowed[] = {"ld-linux", "libc.so", "libm.so", "libstdc++.so", "libgcc_s.so", "libfmt.so",
+                                         "libpthread.so", "libmvec.so"};
+  // The checker may not need fmt (linked as needed); this tool always does.
+  std::istringstream in(run_out({"ldd", checker.string()}) + run_out({"ldd", fs::read_symlink("/proc/self/exe").string()}));
+  for (std::string line; std::getline(in, line);) {
+    // "\tlibfmt.so.9 => /lib/x86_64-linux-gnu/libfmt.so.9 (0x...)" or "\t/lib64/ld-linux-x86-64.so.2 (0x...)"
+    std::istringstream w(line);
+    std::string name, arrow, path;
+    w >> name >> arrow >> path;
+    if (arrow != "=>") path = name;
+    if (path.empty() || path[0] != '/') continue;
+    const std::string base = fs::path(name).filename().string();
+    for (const char* a : kAllowed)
+      if (base.rfind(a, 0) == 0 && std::find_if(r.begin(), r.end(), [&](const auto& e) { return e.second == path; }) == r.end())
+        r.push_back({fs::canonical(path), path});
+  }
+  if (r.empty()) throw GraderError("internal error: ldd finds no shared library in " + checker.string());
+  return r;
+}
+
 // A trusted object: `src` compiled with `defines` and the include folders `inc`.
 fs::path trusted_object(const fs::path& src, const std::vector<std::string>& defines, const std::vector<fs::path>& inc,
                         const fs::path& work) {
@@ -232,6 +270,7 @@ TrustedParts build_trusted(const Exercise& ex, bool hidden, const fs::path& work
   t.checker_public = checker(ex.public_tests(), "public");
   if (hidden) t.checker_hidden = checker(ex.hidden_tests(), "hidden");
   t.driver_objects = {trusted_object(h / "driver_main.cpp", {}, {h}, work), trusted_object(ex.remote(), {}, inc, work)};
+  t.runtime = driver_runtime(t.checker_public);
   return t;
 }
 
@@ -242,8 +281,13 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
   fs::create_directories(out_dir);
   if (::geteuid() == 0 && ::chown(out_dir.c_str(), sandbox_uid(), sandbox_uid()) != 0)
     throw GraderError("cannot hand the build folder to the sandbox's user");
+  // The compile sees the allow-list only (grader_allow.hpp): no other library header, and of
+  // /usr/include what the standard library and the allowed headers include.
+  const IncludeView view = include_view(ex, out_dir.parent_path());
   SandboxRun r;
-  r.read_only = {{lib_include_dir(), "/t2/include"}, {src_dir, "/src"}, {library_archive(), "/t2/lib/libt2_kernel.a"}};
+  r.read_only = {{view.tree, "/t2/include"}, {src_dir, "/src"}, {library_archive(), "/t2/lib/libt2_kernel.a"}};
+  r.masked = view.masked;
+  for (const auto& p : view.system) r.read_only.push_back({p, p});
   std::vector<std::string> objs;
   for (size_t i = 0; i < t.driver_objects.size(); ++i) {
     const std::string inside = fmt::format("/t2/obj/part{}.o", i);
@@ -261,8 +305,10 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
     const double left = wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.limits.wall_seconds = std::max(1.0, left);
     r.limits.cpu_seconds = r.limits.wall_seconds;
-    const auto res = run_sandboxed(r);
-    if (res.timed_out || res.signal == SIGXCPU) {
+    r.tree_cpu_seconds = r.limits.wall_seconds;
+    const Prepared p = prepare_sandboxed(r);
+    const auto res = t2proc::run(p.spec);
+    if (res.timed_out || res.signal == SIGXCPU || *p.out_of_cpu) {
       b.timed_out = true;
       b.messages = fmt::format("the compiler ran out of time (the limit for compiling and linking is {:.0f} s)", wall_seconds);
       return false;
@@ -273,9 +319,18 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
     }
     return true;
   };
-  if (!step({"g++", "-std=c++20", "-O0", "-fno-lto", "-Wall", "-I", "/t2/include", "-I", "/src", "-c",
-             "/src/" + ex.source, "-o", "/out/student.o"}))
+  // The allowed headers are read first, before any line of the submission: no macro of its own
+  // can rename what they define (#define antipode x before #include), and its own #include of
+  // them is then empty (#pragma once). What they define keeps its name for the symbol check.
+  std::vector<std::string> compile = {"g++", "-std=c++20", "-O0", "-fno-lto", "-Wall", "-I", "/t2/include", "-I", "/src"};
+  for (const auto& h : ex.allowed) compile.insert(compile.end(), {"-include", "/t2/include/" + h});
+  compile.insert(compile.end(), {"-c", "/src/" + ex.source, "-o", "/out/student.o"});
+  if (!step(compile)) {
+    if (b.messages.find("No such file or directory") != std::string::npos)
+      b.messages += fmt::format("(this exercise's code may include {}, {} and the C++ standard library)\n", ex.header,
+                                ex.allowed.empty() ? std::string("no library header") : fmt::format("{}", fmt::join(ex.allowed, ", ")));
     return b;
+  }
   std::string bytes;
   if (!read_untrusted(out_dir / "student.o", bytes, 256u << 20)) {
     b.refused = true;
@@ -287,11 +342,9 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
     b.messages = why;
     return b;
   }
-  std::vector<std::string> link = {"g++", "-fno-lto", "-fno-use-linker-plugin"};
-  if (sanitized_tool()) link.push_back("-fsanitize=address,undefined");
-  link.push_back("/out/student.o");
+  std::vector<std::string> link = {"g++", "-fno-lto", "-fno-use-linker-plugin", "/out/student.o"};
   link.insert(link.end(), objs.begin(), objs.end());
-  for (auto l : link_libraries(false)) link.push_back(l == library_archive().string() ? "/t2/lib/libt2_kernel.a" : l);
+  for (auto l : driver_libraries()) link.push_back(l == library_archive().string() ? "/t2/lib/libt2_kernel.a" : l);
   link.insert(link.end(), {"-o", "/out/driver"});
   if (!step(link)) {
     b.messages = "the code does not link (a function of " + ex.header + " is missing or defined twice?):\n" + b.messages;

@@ -19,6 +19,10 @@ struct TrustedParts {
   fs::path checker_public;         ///< public tests + remote.cpp (checker side) + checker main
   fs::path checker_hidden;         ///< hidden tests likewise (empty when not grading)
   std::vector<fs::path> driver_objects;  ///< driver main + remote.cpp (driver side)
+  /// The shared libraries the driver runs with, host path → path inside: the loader, the C and
+  /// C++ runtimes and fmt, nothing else (GMP is linked in statically), so a driver's dlopen has
+  /// nothing else to open; the same under the sanitizers (their runtimes are linked in).
+  std::vector<std::pair<fs::path, fs::path>> runtime;
 };
 
 /// Builds what `ex` needs outside the sandbox; throws GraderError when trusted code does not build.

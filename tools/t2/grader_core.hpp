@@ -30,6 +30,8 @@ struct Exercise {
   int time_limit = 10;        ///< seconds of CPU per test (wall clock: twice that plus 2)
   int memory_mb = 512;        ///< address-space limit per test
   std::vector<std::string> forbidden;    ///< library names the submission must not refer to
+  std::vector<std::string> allowed;      ///< library headers the submission may include ("t2/kernel/point.hpp");
+                                         ///< its compile sees these, what they include, and the C++ standard library
   std::map<std::string, double> points;  ///< weight per test ("Suite.Name"); default 1
   double points_of(const std::string& test) const;  ///< weight of one test
   fs::path public_tests() const { return dir / "test_public.cpp"; }        ///< public tests
@@ -79,6 +81,7 @@ struct RunOptions {
   int compile_limit = 120;         ///< wall-clock seconds for compiling and linking the submission
   bool verbose = false;            ///< print progress to stderr
   int time_limit = 0;              ///< seconds of CPU per test; 0: the manifest's
+  bool unsafe = false;             ///< grade even where no cgroup bounds a run's whole process tree
 };
 
 /// Builds `submission_dir`/<source> in the sandbox and judges every test.

@@ -45,7 +45,7 @@ Exercise read_exercise(const fs::path& dir) {
   std::ifstream in(m);
   if (!in) throw t2::BadInput(fmt::format("{}: cannot read the manifest", m.string()));
   std::string line;
-  bool forbidden_line = false;
+  bool forbidden_line = false, allowed_line = false;
   for (int n = 1; std::getline(in, line); ++n) {
     line = trim(line);
     if (line.empty() || line[0] == '#') continue;
@@ -72,6 +72,17 @@ Exercise read_exercise(const fs::path& dir) {
       std::istringstream names(v);
       for (std::string f; std::getline(names, f, ',');)
         if (!trim(f).empty()) ex.forbidden.push_back(trim(f));
+    } else if (k == "allowed") {
+      // Library headers separated by commas: t2/kernel/point.hpp, t2/kernel/filter.hpp
+      allowed_line = true;
+      std::istringstream names(v);
+      for (std::string f; std::getline(names, f, ',');) {
+        f = trim(f);
+        if (f.empty()) continue;
+        if (f.rfind("t2/", 0) != 0 || f.find("..") != std::string::npos || f.size() < 5 || f.substr(f.size() - 4) != ".hpp")
+          throw t2::BadInput(fmt::format("{}:{}: '{}' is not a library header (t2/.../NAME.hpp)", m.string(), n, f));
+        ex.allowed.push_back(f);
+      }
     } else if (k == "points") {
       const auto sp = v.find_last_of(" \t");
       if (sp == std::string::npos)
@@ -85,6 +96,8 @@ Exercise read_exercise(const fs::path& dir) {
     if (val->empty()) throw t2::BadInput(fmt::format("{}: missing '{}:'", m.string(), key));
   if (!forbidden_line)
     throw t2::BadInput(fmt::format("{}: missing 'forbidden:' (the library names the exercise must not call)", m.string()));
+  if (!allowed_line)
+    throw t2::BadInput(fmt::format("{}: missing 'allowed:' (the library headers a submission may include)", m.string()));
   return ex;
 }
 

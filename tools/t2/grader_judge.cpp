@@ -85,7 +85,8 @@ struct Pipe {
 };
 
 // One test: the checker and the driver side by side.
-void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, int cpu_s, int memory_mb, double wall) {
+void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, const TrustedParts& parts, int cpu_s,
+               int memory_mb, double wall) {
   Pipe calls, answers;
   t2proc::Spec c;
   c.argv = {checker.string(), fmt::format("--t2-calls={}", calls.w), fmt::format("--t2-answers={}", answers.r),
@@ -97,8 +98,13 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
   SandboxRun d;
   d.argv = {"/t2/driver", fmt::format("--t2-calls={}", calls.r), fmt::format("--t2-answers={}", answers.w)};
   d.copied = {{driver, "/t2/driver"}};  // a copy: no host path in the sandbox's mountinfo
+  // No /usr, in either build: the driver's shared libraries only (GMP, Boost, CGAL ... are not
+  // there to dlopen).
+  d.system = false;
+  d.read_only = parts.runtime;
   d.handover_fds = {calls.r, answers.w};
   d.limits.cpu_seconds = cpu_s;
+  d.tree_cpu_seconds = cpu_s;  // and for all its processes together (forked workers included)
   d.limits.wall_seconds = wall;
   d.limits.memory_bytes = static_cast<std::uint64_t>(memory_mb) << 20;
 #if defined(__SANITIZE_ADDRESS__)
@@ -123,8 +129,8 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, i
   } else if (verdict == "GONE" || !cr.ok()) {
     // Through bubblewrap the CPU limit's SIGXCPU arrives as the exit status 128 + SIGXCPU; a run
     // that lasted at least the CPU limit tells it from a deliberate, early exit(152).
-    const bool out_of_cpu =
-        dr.signal == SIGXCPU || (dr.exit_code == 128 + SIGXCPU && dr.wall_seconds >= 0.9 * cpu_s);
+    const bool out_of_cpu = *dp.out_of_cpu || dr.signal == SIGXCPU ||
+                            (dr.exit_code == 128 + SIGXCPU && dr.wall_seconds >= 0.9 * cpu_s);
     if (dr.timed_out || out_of_cpu || (cr.timed_out && !dr.ok())) {
       t.what = "timed out";
       if (!t.hidden)
@@ -191,6 +197,12 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
     for (const auto& n : list_tests(parts.checker_hidden)) rep.tests.push_back({n, true, false, ex.points_of(n), "", ""});
   if (rep.tests.empty()) throw GraderError("internal error: no tests found for " + ex.id);
   if (!box.works) throw GraderError("refusing to run student code: " + box.description);
+  // Grading (hidden tests, someone else's code): the whole tree's memory and CPU time must be
+  // bounded. Without root there is no cgroup: per-process limits only, and /tmp's size.
+  if (opt.include_hidden && !box.tree_bounded && !opt.unsafe)
+    throw GraderError("refusing to grade: no cgroup bounds the memory and CPU time of a submission's whole process "
+                      "tree (the grader needs root for that: run it as root, as in the Gradescope container); "
+                      "--unsafe grades anyway, with per-process limits only (" + box.description + ")");
 
   auto fail_all = [&](const std::string& what) {
     for (auto& t : rep.tests) t.what = what;
@@ -221,7 +233,7 @@ Report run_exercise(const Exercise& ex, const fs::path& submission_dir, const Ru
       continue;
     }
     say(fmt::format("running {} ({}/{})", t.name, k, rep.tests.size()));
-    judge_one(t, t.hidden ? parts.checker_hidden : parts.checker_public, b.driver, cpu, ex.memory_mb,
+    judge_one(t, t.hidden ? parts.checker_hidden : parts.checker_public, b.driver, parts, cpu, ex.memory_mb,
               std::min(2.0 * cpu + 2, left));
   }
   return rep;

@@ -18,6 +18,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -96,10 +97,35 @@ class Cgroup {
       write_text(root / "cgroup.subtree_control", "+memory +pids +cpu");
       add(root / name, {{"pids.max", std::to_string(pids)}, {"cpu.max", "100000 100000"}});
       if (memory) add(root / name, {{"memory.max", std::to_string(memory)}, {"memory.swap.max", "0"}});
+      usage_ = {root / name / "cpu.stat", 1e-6};
     } else {
       add(root / "pids" / name, {{"pids.max", std::to_string(pids)}});
       if (memory) add(root / "memory" / name, {{"memory.limit_in_bytes", std::to_string(memory)}});
       add(root / "cpu" / name, {{"cpu.cfs_period_us", "100000"}, {"cpu.cfs_quota_us", "100000"}});
+      // CPU time used: cpuacct, mounted with cpu (cpu,cpuacct) or on its own.
+      const fs::path acct = fs::exists(root / "cpu" / name / "cpuacct.usage", ec) ? root / "cpu" / name : root / "cpuacct" / name;
+      if (acct != root / "cpu" / name) add(acct, {});
+      usage_ = {acct / "cpuacct.usage", 1e-9};
+    }
+  }
+  /// CPU seconds the whole tree has used so far (-1 when unknown).
+  double cpu_seconds() const {
+    std::ifstream in(usage_.first);
+    std::string word;
+    double v = -1;
+    if (usage_.second == 1e-6) {  // cgroup v2: "usage_usec N" in cpu.stat
+      for (std::string key; in >> key >> word;)
+        if (key == "usage_usec") v = std::stod(word);
+    } else if (in >> word) {
+      v = std::stod(word);
+    }
+    return v < 0 ? -1 : v * usage_.second;
+  }
+  /// Kills every process of the tree.
+  void kill_all() const {
+    for (const auto& d : dirs_) {
+      std::ifstream procs(d / "cgroup.procs");
+      for (long pid; procs >> pid;) kill(static_cast<pid_t>(pid), SIGKILL);
     }
   }
   Cgroup(const Cgroup&) = delete;
@@ -124,6 +150,7 @@ class Cgroup {
  private:
   std::vector<fs::path> dirs_;
   std::string said_;
+  std::pair<fs::path, double> usage_;  // the file of the CPU time used, and its unit in seconds
   void add(const fs::path& d, const std::vector<std::pair<std::string, std::string>>& settings) {
     std::error_code ec;
     const bool fresh = fs::create_directory(d, ec) && !ec;
@@ -131,6 +158,34 @@ class Cgroup {
     if (fresh) dirs_.push_back(d);
     for (const auto& [file, value] : settings)
       if (write_text(d / file, value)) said_ += (said_.empty() ? "" : ", ") + file + " " + value;
+  }
+};
+
+// A run's cgroup and, when the tree has a CPU limit, the thread that enforces it: it reads the
+// tree's CPU time every 50 ms and kills the tree when it is over (RLIMIT_CPU counts one process
+// only: a forked worker doubled the limit, issue 29).
+struct TreeHold {
+  std::shared_ptr<Cgroup> cg;
+  std::shared_ptr<std::atomic<bool>> over = std::make_shared<std::atomic<bool>>(false);
+  std::atomic<bool> stop{false};
+  std::thread watcher;
+  TreeHold(std::shared_ptr<Cgroup> c, double cpu_limit) : cg(std::move(c)) {
+    if (cpu_limit <= 0 || cg->cpu_seconds() < 0) return;
+    watcher = std::thread([this, cpu_limit] {
+      while (!stop) {
+        if (cg->cpu_seconds() > cpu_limit) {
+          *over = true;
+          cg->kill_all();
+        }
+        usleep(50000);
+      }
+    });
+  }
+  TreeHold(const TreeHold&) = delete;
+  TreeHold& operator=(const TreeHold&) = delete;
+  ~TreeHold() {
+    stop = true;
+    if (watcher.joinable()) watcher.join();
   }
 };
 
@@ -174,9 +229,13 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   }
   a.insert(a.end(), {"bwrap", "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent",
                      "--new-session", "--cap-drop", "ALL"});
-  system_binds(a);
-  a.insert(a.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(r.tmp_bytes), "--tmpfs", "/tmp"});
+  if (r.system) system_binds(a);
+  // /dev read-only: bubblewrap's /dev is a tmpfs that no size or cgroup bounds (issue 29, break 7).
+  a.insert(a.end(), {"--proc", "/proc", "--dev", "/dev", "--remount-ro", "/dev", "--size", std::to_string(r.tmp_bytes),
+                     "--tmpfs", "/tmp"});
+  for (const auto& d : r.masked) a.insert(a.end(), {"--size", "65536", "--tmpfs", d.string()});
   for (const auto& [host, inside] : r.read_only) a.insert(a.end(), {"--ro-bind", host.string(), inside.string()});
+  for (const auto& d : r.masked) a.insert(a.end(), {"--remount-ro", d.string()});
   for (const auto& [host, inside] : r.writable) a.insert(a.end(), {"--bind", host.string(), inside.string()});
   std::vector<int> copies;
   for (const auto& [host, inside] : r.copied) {
@@ -204,7 +263,11 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   s.keep_fds.push_back(sfd);
   s.keep_fds.insert(s.keep_fds.end(), copies.begin(), copies.end());
   s.close_in_parent = s.keep_fds;
-  return {std::move(s), cg, cg ? cg->summary() : std::string()};
+  std::shared_ptr<TreeHold> hold = cg ? std::make_shared<TreeHold>(cg, r.tree_cpu_seconds) : nullptr;
+  std::string said = cg ? cg->summary() : std::string();
+  if (hold && hold->watcher.joinable()) said += fmt::format(", CPU time of the tree {} s", r.tree_cpu_seconds);
+  std::shared_ptr<const std::atomic<bool>> over = hold ? hold->over : std::make_shared<std::atomic<bool>>(false);
+  return {std::move(s), hold, said, over};
 }
 
 t2proc::Result run_sandboxed(const SandboxRun& r) {
@@ -228,6 +291,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   const Prepared prepared = prepare_sandboxed(r);
   const t2proc::Result res = t2proc::run(prepared.spec);
   s.probe_output = res.out;
+  s.tree_bounded = prepared.tree_limits.find("memory") != std::string::npos;
   std::map<std::string, std::string> f;
   std::istringstream in(res.out);
   for (std::string l; std::getline(in, l);)
@@ -235,7 +299,7 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
   const std::string secrets_ok = fmt::format("{}/{}", secrets.size(), secrets.size());
   s.works = res.ok() && f["uid"] != "" && f["uid"] != "0" && f["caps"] == "none" && f["write_usr"] == "no" &&
             f["remount_usr"] == "no" && f["new_userns"] == "no" && f["network_interfaces"] == "0" &&
-            f["io_uring"] == "no" && f["netlink"] == "no" && f["host_paths"] == "0" &&
+            f["io_uring"] == "no" && f["netlink"] == "no" && f["host_paths"] == "0" && f["write_dev"] == "no" &&
             f["secrets_unreadable"] == secrets_ok;
   if (!res.ok()) {
     s.mode = "bubblewrap does not work here: " + (res.error.empty() ? res.err.substr(0, 300) : res.error);
@@ -244,10 +308,10 @@ const Sandbox& sandbox(const fs::path& probe, const std::vector<fs::path>& secre
     s.mode = fmt::format("bubblewrap as uid {}{}", f["uid"], running_as_root() ? " (setpriv from root)" : "");
     s.description = fmt::format(
         "{}; probed inside: capabilities {}, seccomp {}, /usr writable {}, remount {}, new user "
-        "namespace {}, network interfaces {}, io_uring {}, netlink {}, host paths in mountinfo {}, hidden "
-        "files unreadable {}, /tmp tmpfs {} MB, process limit {}",
+        "namespace {}, network interfaces {}, io_uring {}, netlink {}, host paths in mountinfo {}, /dev writable {}, "
+        "hidden files unreadable {}, /tmp tmpfs {} MB, process limit {}",
         s.mode, f["caps"], f["seccomp"], f["write_usr"], f["remount_usr"], f["new_userns"],
-        f["network_interfaces"], f["io_uring"], f["netlink"], f["host_paths"], f["secrets_unreadable"],
+        f["network_interfaces"], f["io_uring"], f["netlink"], f["host_paths"], f["write_dev"], f["secrets_unreadable"],
         f["tmp_mb"], f["nproc"]);
     s.description += prepared.tree_limits.empty() ? "; no cgroup (per-process limits only)"
                                                   : "; a cgroup for the whole tree of each run (the probe run's: " + prepared.tree_limits + ")";

@@ -6,6 +6,7 @@
 // only writable place (plus, for the compiler, one output folder), rlimits, and a cgroup for the
 // whole process tree where the cgroup file system is writable.
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -24,12 +25,18 @@ namespace fs = std::filesystem;
 struct SandboxRun {
   std::vector<std::string> argv;                          ///< the command, with paths as seen inside
   std::vector<std::pair<fs::path, fs::path>> read_only;   ///< host path → path inside (read-only)
+  bool system = true;                                     ///< the host's /usr, /lib ... read-only (false:
+                                                          ///< nothing but read_only and copied)
+  std::vector<fs::path> masked;                           ///< system folders shown empty (read_only may bind
+                                                          ///< parts back: the compile's allow-list)
   std::vector<std::pair<fs::path, fs::path>> writable;    ///< host folder → path inside (compiler output only)
   std::vector<std::pair<fs::path, fs::path>> copied;      ///< host file → executable copy inside, whose
                                                           ///< host path /proc/self/mountinfo does not show
   std::string chdir = "/tmp";                             ///< working folder inside
   t2proc::Limits limits;                                  ///< per-process limits and wall clock
   std::uint64_t tree_memory_bytes = 0;                    ///< cgroup memory of the whole tree (0: none)
+  double tree_cpu_seconds = 0;                            ///< CPU time of the whole tree, all processes
+                                                          ///< together (0: none; needs the cgroup)
   int tree_processes = 64;                                ///< processes of the whole tree
   std::uint64_t tmp_bytes = 64u << 20;                    ///< size of the tmpfs at /tmp
   t2proc::Stream out = t2proc::Stream::capture;           ///< stdout
@@ -41,8 +48,10 @@ struct SandboxRun {
 /// until the run has ended and is destroyed.
 struct Prepared {
   t2proc::Spec spec;           ///< the command line of setpriv / bwrap / the command
-  std::shared_ptr<void> hold;  ///< the run's cgroup (removed when the last copy goes)
+  std::shared_ptr<void> hold;  ///< the run's cgroup and its CPU watcher (removed when the last copy goes)
   std::string tree_limits;     ///< the cgroup limits in force ("" when there is no cgroup)
+  std::shared_ptr<const std::atomic<bool>> out_of_cpu;  ///< set when the tree used its CPU time and was
+                                                        ///< killed (never set without a cgroup)
 };
 
 /// What protects the machine while student code runs, as probed.
@@ -51,6 +60,7 @@ struct Sandbox {
   std::string mode;           ///< how: "bubblewrap as uid N" or why it cannot
   std::string description;    ///< one line for every report, made of the probe's findings
   std::string probe_output;   ///< the probe's own lines (name=value)
+  bool tree_bounded = false;  ///< a cgroup bounds the memory of a run's whole process tree (as root)
 };
 
 /// An error of the grader itself (a broken exercise, a missing build, no sandbox).

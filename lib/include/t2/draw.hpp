@@ -32,6 +32,7 @@
 /// the sphere is dashed and faded. `save` only rewrites a file whose bytes changed.
 
 #include "t2/draw/figure.hpp"
+#include "t2/draw/loglog.hpp"
 #include "t2/draw/palette.hpp"
 #include "t2/draw/render.hpp"
 #include "t2/draw/scene_figure.hpp"

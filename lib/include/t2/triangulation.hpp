@@ -5,10 +5,12 @@
 /// queried, and the Delaunay triangulation (Lawson's flips, the randomized incremental
 /// construction, divide and conquer, and the T² Delaunay with its ring at Ω).
 
+#include "t2/triangulation/antipodal_edge.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/delaunay_t2.hpp"
 #include "t2/triangulation/divide.hpp"
 #include "t2/triangulation/ear_clipping.hpp"
+#include "t2/triangulation/face_kind.hpp"
 #include "t2/triangulation/lawson.hpp"
 #include "t2/triangulation/triangulate.hpp"
 #include "t2/triangulation/triangulate_t2.hpp"

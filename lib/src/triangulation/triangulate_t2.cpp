@@ -1,4 +1,4 @@
-// Algorithm 9 of seed 000 on T²: the face kinds, the sides, the degenerate cases and the untraced
+// Algorithm 9 of seed 000 on T²: the degenerate cases and the untraced
 // entry point (triangulate_t2.hpp; the insertion itself is insert_t2.hpp).
 #include "t2/triangulation/triangulate_t2.hpp"
 #include "t2/triangulation/insert_t2.hpp"
@@ -20,25 +20,6 @@
 namespace t2 {
 
 using Index = Triangulation::Index;
-constexpr Index kInf = Triangulation::infinite, kNone = Triangulation::none;
-
-FaceKind face_kind(const Triangulation& tr, Index t) {
-  const Point &a = tr.point(tr.vertex(t, 0)), &b = tr.point(tr.vertex(t, 1)), &c = tr.point(tr.vertex(t, 2));
-  if (orient(a, b, c) != ZERO) return FaceKind::proper;
-  const bool lune = a == antipode(b) || b == antipode(c) || c == antipode(a);
-  return lune ? FaceKind::lune : FaceKind::flat;
-}
-
-Sign side_of_edge(const Triangulation& tr, std::span<const AntipodalEdge> lunes, Index t, int i, const Point& p) {
-  const Index a = tr.vertex(t, (i + 1) % 3), b = tr.vertex(t, (i + 2) % 3);
-  const Sign o = orient(tr.point(a), tr.point(b), p);
-  if (o != ZERO || !(tr.point(a) == antipode(tr.point(b)))) return o;
-  for (const AntipodalEdge& e : lunes) {
-    if (e.z == a && e.nz == b) return side_of_antipodal_edge(tr.points(), e, p);
-    if (e.z == b && e.nz == a) return static_cast<Sign>(-side_of_antipodal_edge(tr.points(), e, p));
-  }
-  throw std::logic_error("side_of_edge: an antipodal edge without its bisector");
-}
 
 namespace {
 

@@ -132,12 +132,17 @@ void Triangulation::rename_vertex(Index t, Index from, Index to) {
   } while (t != start);
   set_link(from, none);
   set_link(to, start);
+  for (AntipodalEdge& e : antipodal_)
+    for (Index* x : {&e.z, &e.nz, &e.u, &e.w})
+      if (*x == from) *x = to;
 }
 
 void Triangulation::renumber_indices(const std::vector<Index>& order) {
   for (Index& v : v_)
     if (v != infinite) v = order[v];
   for (auto& [d, k] : duplicates_) d = order[d], k = order[k];
+  for (AntipodalEdge& e : antipodal_)
+    for (Index* x : {&e.z, &e.nz, &e.u, &e.w}) *x = order[*x];
 }
 
 void Triangulation::renumber_link(const std::vector<Index>& order, std::size_t count) {
@@ -268,6 +273,22 @@ std::string Triangulation::validate() const {
       return "the link of vertex " + std::to_string(v) + " does not name one of its triangles";
   }
   if (count[np] == 0 && size() == 0) return "no triangle in dimension 2";
+  // Invariant 6: one record per antipodal edge, and no record of an edge that is not one.
+  std::vector<int> records(antipodal_.size(), 0);
+  for (Index h = 0; h < v_.size(); ++h) {
+    const Index a = org(h), b = dest(h);
+    if (h > n_[h] || a == infinite || b == infinite || !(points_[a] == antipode(points_[b]))) continue;
+    int found = 0;
+    for (std::size_t k = 0; k < antipodal_.size(); ++k) {
+      const AntipodalEdge& e = antipodal_[k];
+      if ((e.z == a && e.nz == b) || (e.z == b && e.nz == a)) ++found, ++records[k];
+    }
+    if (found != 1)
+      return "the antipodal edge " + std::to_string(a) + "-" + std::to_string(b) + " has " + std::to_string(found) +
+             " records";
+  }
+  for (std::size_t k = 0; k < records.size(); ++k)
+    if (records[k] != 1) return "the antipodal-edge record " + std::to_string(k) + " names no edge";
   // No two vertices at the same point.
   std::vector<Index> used;
   for (Index v = 0; v < np; ++v)

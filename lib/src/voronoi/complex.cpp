@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "t2/kernel/angle.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/incircle.hpp"
+#include "t2/kernel/orient.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/delaunay_ring.hpp"
 
@@ -25,8 +27,17 @@ void flat_fan(const std::vector<Index>& c, std::vector<Face>& faces) {
   for (std::size_t i = 1; i + 1 < c.size(); ++i) faces.push_back({c[0], c[i + 1], c[i]});
 }
 
-/// Complex part 1 beyond the hull of the front triangulation `tr` (indices into `index`).
-void add_beyond_hull(const Triangulation& tr, const std::vector<Index>& index, std::vector<Face>& faces) {
+/// The kind of the face (a, b, c) (complex.hpp): its orientation if it is proper, else ZERO.
+Sign turn_of(const Point& a, const Point& b, const Point& c) {
+  const Sign s = sign_of(a.w());
+  if (s == ZERO || sign_of(b.w()) != s || sign_of(c.w()) != s) return ZERO;
+  return orient(a, b, c);
+}
+
+/// Complex part 1 beyond the hull of the front triangulation `tr`: the farthest-point faces
+/// (clockwise: kind NEGATIVE), then the flat fans (ZERO).
+void add_beyond_hull(const Triangulation& tr, DelaunayComplex& out) {
+  auto& faces = out.faces;
   const std::vector<Index> c = detail::boundary_cycle(tr);  // counter-clockwise, from a corner
   const auto& p = tr.points();
   const std::size_t k = c.size();
@@ -36,35 +47,73 @@ void add_beyond_hull(const Triangulation& tr, const std::vector<Index>& index, s
   std::vector<Point> corners;
   for (std::size_t s : at) corners.push_back(p[c[s]]);
   for (const Face& t : farthest_delaunay(corners))  // reversed: around their back vertex
-    faces.push_back({index[c[at[t[0]]]], index[c[at[t[2]]]], index[c[at[t[1]]]]});
+    faces.push_back({c[at[t[0]]], c[at[t[2]]], c[at[t[1]]]});
+  out.turns.resize(faces.size(), NEGATIVE);
   for (std::size_t j = 0; j < at.size(); ++j) {  // the sites strictly inside a hull edge
     const std::size_t end = j + 1 < at.size() ? at[j + 1] : k;
     std::vector<Index> chain;
-    for (std::size_t s = at[j]; s <= end; ++s) chain.push_back(index[c[s % k]]);
+    for (std::size_t s = at[j]; s <= end; ++s) chain.push_back(c[s % k]);
     flat_fan(chain, faces);
+  }
+  out.turns.resize(faces.size(), ZERO);
+}
+
+/// Links the half-edges of `out` still without a twin (`Triangulation::none`) and those of the
+/// faces from `first` on, by matching each directed edge u → v with v → u among them.
+void link_open(DelaunayComplex& out, std::size_t first) {
+  out.twins.resize(3 * out.faces.size(), Triangulation::none);
+  std::unordered_map<std::uint64_t, Index> open;  // u → v: the half-edge
+  auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
+  auto ends = [&](Index h) {
+    const Face& t = out.faces[h / 3];
+    return std::pair{t[(h + 1) % 3], t[(h + 2) % 3]};
+  };
+  for (Index h = 0; h < out.twins.size(); ++h)
+    if (h / 3 >= first || out.twins[h] == Triangulation::none) {
+      const auto [u, v] = ends(h);
+      open[key(u, v)] = h;
+    }
+  for (const auto& [k, h] : open) {
+    const auto [u, v] = ends(h);
+    const auto r = open.find(key(v, u));
+    if (r == open.end()) throw std::logic_error("delaunay_complex: an edge without its reverse");
+    out.twins[h] = r->second;
   }
 }
 
-/// Parts 1, 4 and 5 for sites all in front; `index` maps the points to output indices.
-void front_complex(std::span<const Point> pts, const std::vector<Index>& index, DelaunayComplex& out) {
+/// Parts 1, 4 and 5 for sites all in front.
+void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
   const Triangulation tr = delaunay(pts);
-  for (auto [d, k] : tr.duplicates()) out.duplicates.emplace_back(index[d], index[k]);
+  out.duplicates = tr.duplicates();
+  out.dimension = tr.dimension();
   if (tr.dimension() == 2) {
-    for (const Face& t : tr.finite_triangles()) out.faces.push_back({index[t[0]], index[t[1]], index[t[2]]});
-    add_beyond_hull(tr, index, out.faces);
-    out.dimension = 2;
+    std::vector<Index> id(tr.size());  // triangle → face, none for the infinite ones
+    Index nf = 0;
+    for (Index t = 0; t < tr.size(); ++t) id[t] = tr.is_infinite(t) ? Triangulation::none : nf++;
+    out.faces.reserve(tr.size());  // one pass over fresh memory: no zeros written first
+    out.twins.reserve(3 * tr.size());
+    for (Index t = 0; t < tr.size(); ++t) {
+      if (id[t] == Triangulation::none) continue;
+      out.faces.push_back({tr.vertex(t, 0), tr.vertex(t, 1), tr.vertex(t, 2)});
+      for (int i = 0; i < 3; ++i) {
+        const Index e = tr.twin(t, i), g = id[e / 3];
+        out.twins.push_back(g == Triangulation::none ? Triangulation::none : 3 * g + e % 3);
+      }
+    }
+    out.turns.assign(nf, POSITIVE);  // triangulation.hpp, invariant 1
+    add_beyond_hull(tr, out);
+    link_open(out, nf);  // the hull edges and the faces beyond
     return;
   }
-  out.dimension = tr.dimension();
   if (tr.dimension() < 1) return;
   std::vector<Index> c = detail::boundary_cycle(tr);  // dimension 1: p₀ … p_m … p₁
   if (c.size() < 4) return;  // two distinct sites
   c.resize(c.size() / 2 + 1);  // p₀ … p_m in order along the line
-  std::vector<Index> line;
-  for (Index v : c) line.push_back(index[v]);
-  flat_fan(line, out.faces);
-  std::reverse(line.begin(), line.end());
-  flat_fan(line, out.faces);
+  flat_fan(c, out.faces);
+  std::reverse(c.begin(), c.end());
+  flat_fan(c, out.faces);
+  out.turns.assign(out.faces.size(), ZERO);
+  link_open(out, 0);
   out.dimension = 2;
 }
 
@@ -101,31 +150,40 @@ std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<con
 DelaunayComplex delaunay_complex(std::span<const Point> points) {
   DelaunayComplex out;
   out.points.assign(points.begin(), points.end());
-  std::vector<Index> front, back, omega;
-  for (Index k = 0; k < points.size(); ++k)
-    (points[k].w() > 0 ? front : points[k].w() < 0 ? back : omega).push_back(k);
+  std::size_t front = 0, back = 0;
+  std::vector<Index> omega;
+  for (Index k = 0; k < points.size(); ++k) {
+    if (points[k].w() > 0) ++front;
+    else if (points[k].w() < 0) ++back;
+    else omega.push_back(k);
+  }
   auto finish = [&] {
     std::sort(out.duplicates.begin(), out.duplicates.end());
     return std::move(out);
   };
-  if (back.empty() && omega.empty()) {  // parts 1, 4, 5
-    front_complex(points, front, out);
+  if (back == 0 && omega.empty()) {  // parts 1, 4, 5
+    front_complex(points, out);
     return finish();
   }
-  if (front.empty() && omega.empty()) {  // part 2: the mirror of ¬S
+  if (front == 0 && omega.empty()) {  // part 2: the mirror of ¬S
     std::vector<Point> anti;
     for (const Point& p : points) anti.push_back(antipode(p));
     DelaunayComplex a = delaunay_complex(anti);
     for (auto& t : a.faces) std::swap(t[1], t[2]);
+    const Index swapped[3] = {0, 2, 1};  // the slot of each vertex after the swap
+    out.twins.resize(a.twins.size());
+    for (Index h = 0; h < a.twins.size(); ++h)
+      out.twins[h - h % 3 + swapped[h % 3]] = a.twins[h] - a.twins[h] % 3 + swapped[a.twins[h] % 3];
     out.faces = std::move(a.faces);
+    out.turns = std::move(a.turns);  // orient(p, r, q) = −orient(¬p, ¬q, ¬r) · −1: the same
     out.duplicates = std::move(a.duplicates);
     out.dimension = a.dimension;
     return finish();
   }
   Triangulation tr0;  // the distinct directions of Ω
   const std::vector<Index> z = detail::omega_order(points, omega, tr0);
-  if ((front.empty() || back.empty()) && z.size() >= 2)
-    throw Undefined("voronoi: the " + std::string(front.empty() ? "front" : "back") +
+  if ((front == 0 || back == 0) && z.size() >= 2)
+    throw Undefined("voronoi: the " + std::string(front == 0 ? "front" : "back") +
                     " side holds no site while " + std::to_string(omega[0]) + " and other sites lie on Omega: " +
                     "that hemisphere would be shared among them by angles seen from a proper point, "
                     "which depend on the origin");
@@ -135,7 +193,7 @@ DelaunayComplex delaunay_complex(std::span<const Point> points) {
     out.dimension = line.dimension();
     if (points.size() - out.duplicates.size() <= 2) return finish();
   }
-  if (detail::all_collinear_t2(points) || front.empty() || back.empty())
+  if (detail::all_collinear_t2(points) || front == 0 || back == 0)
     throw std::runtime_error("voronoi: collinear sites on both sides, or one site on Omega with one side empty: "
                              "not built yet (issue 24)");
   const Triangulation t2 = detail::delaunay_t2(points, DelaunayTraits{}, true);  // part 3
@@ -144,6 +202,8 @@ DelaunayComplex delaunay_complex(std::span<const Point> points) {
     const Face f{t2.vertex(t, 0), t2.vertex(t, 1), t2.vertex(t, 2)};
     if (t2.is_infinite(t)) throw std::logic_error("delaunay_complex: v-infinity in a two-sided complex");
     out.faces.push_back(f);
+    out.turns.push_back(turn_of(points[f[0]], points[f[1]], points[f[2]]));
+    for (int i = 0; i < 3; ++i) out.twins.push_back(t2.twin(t, i));
   }
   out.dimension = 2;
   return finish();

@@ -1,11 +1,13 @@
 // The Voronoi diagram of T² as the dual of the Delaunay complex (t2/voronoi/voronoi.hpp).
 #include "t2/voronoi/voronoi.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 
+#include "t2/kernel/incircle.hpp"
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/kernel/orient.hpp"
 
@@ -70,70 +72,162 @@ ExactPoint circumcentre(const Point& a, const Point& b, const Point& c) {
 //< circumcentre
 
 //> voronoi-dual
-VoronoiDiagram voronoi(const DelaunayComplex& dc) {
+namespace {
+
+/// The boundary of the polygon of vertex x of the faces (their vertex in `vx`), from the
+/// half-edge h on it: each site once, counter-clockwise around x (u → v, then around v inside
+/// the polygon to the next boundary half-edge).
+void polygon(const DelaunayComplex& dc, const std::vector<Index>& vx, Index h, std::vector<Index>& out) {
+  const Index x = vx[h / 3], start = h;
+  do {
+    out.push_back(dc.faces[h / 3][(h + 1) % 3]);  // the origin of h
+    h = h - h % 3 + (h + 1) % 3;  // the next half-edge of its face, from the destination of h
+    while (vx[dc.twins[h] / 3] == x) {
+      const Index e = dc.twins[h];
+      h = e - e % 3 + (e + 1) % 3;
+    }
+  } while (h != start);
+}
+
+/// The diagram of the complex `dc` whose sites `sites` (dc.points, or moved from it).
+VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
   VoronoiDiagram vd;
+  vd.sites = std::move(sites);
   vd.duplicates = dc.duplicates;
   if (dc.faces.empty()) {
     if (dc.dimension == 1) {  // two distinct sites: their bisector
-      std::vector<char> dropped(dc.points.size(), 0);
+      std::vector<char> dropped(vd.sites.size(), 0);
       for (auto [d, k] : dc.duplicates) dropped[d] = 1;
       std::vector<Index> s;
-      for (Index k = 0; k < dc.points.size(); ++k)
+      for (Index k = 0; k < vd.sites.size(); ++k)
         if (!dropped[k]) s.push_back(k);
       vd.lines.emplace_back(s.at(0), s.at(1));
     }
     return vd;
   }
-  const Index nf = static_cast<Index>(dc.faces.size());
-  std::unordered_map<std::uint64_t, Index> half;  // directed edge u → v: 3·face + slot of u
-  auto key = [](Index u, Index v) { return (std::uint64_t(u) << 32) | v; };
+  const auto& F = dc.faces;
+  const auto& P = vd.sites;
+  const auto& turn = dc.turns;
+  const Index nf = static_cast<Index>(F.size());
+  std::unordered_map<Index, ExactPoint> centre;  // of the faces that are not proper
   for (Index f = 0; f < nf; ++f)
-    for (int i = 0; i < 3; ++i) half[key(dc.faces[f][i], dc.faces[f][(i + 1) % 3])] = 3 * f + i;
-  auto twin = [&](Index h) {
-    const auto& t = dc.faces[h / 3];
-    return half.at(key(t[(h % 3 + 1) % 3], t[h % 3]));
-  };
-  std::vector<ExactPoint> centre;
-  centre.reserve(nf);
-  for (const auto& t : dc.faces) centre.push_back(circumcentre(dc.points[t[0]], dc.points[t[1]], dc.points[t[2]]));
-  std::vector<Index> up(nf);  // faces with one circumcentre, across their common edges
-  std::iota(up.begin(), up.end(), Index(0));
-  for (Index h = 0; h < 3 * nf; ++h) {
-    const Index g = twin(h) / 3, f = h / 3;
-    if (f < g && centre[f] == centre[g]) up[find(up, f)] = find(up, g);
-  }
-  std::vector<Index> vertex(nf, Triangulation::none);
+    if (turn[f] == ZERO) centre.emplace(f, circumcentre(P[F[f][0]], P[F[f][1]], P[F[f][2]]));
+  std::vector<std::pair<Index, Index>> merge;  // adjacent faces with one centre (file comment)
+  // While no faces merge, each face is a vertex: its cells and edges are written in this pass.
+  vd.cells.reserve(3 * std::size_t(nf));
+  vd.edges.reserve(3 * std::size_t(nf) / 2);
+  constexpr Index ahead = 16;  // the sites are in input order: fetch those of later faces early
   for (Index f = 0; f < nf; ++f) {
-    const Index r = find(up, f);
-    if (vertex[r] == Triangulation::none) {
-      vertex[r] = static_cast<Index>(vd.vertices.size());
-      vd.vertices.push_back(centre[r]);
+    if (f + ahead < nf)
+      for (int i = 0; i < 3; ++i) {
+        __builtin_prefetch(&P[F[f + ahead][i]]);
+        __builtin_prefetch(&F[dc.twins[3 * (f + ahead) + i] / 3]);
+      }
+    if (f + ahead / 2 < nf)
+      for (int i = 0; i < 3; ++i) {
+        const Index e = dc.twins[3 * (f + ahead / 2) + i];
+        __builtin_prefetch(&P[F[e / 3][e % 3]]);
+      }
+    if (merge.empty()) {
+      vd.cells.insert(vd.cells.end(), F[f].begin(), F[f].end());
+      for (int i = 0; i < 3; ++i) {  // u → v in f, from the vertex of f to its twin's
+        const Index u = F[f][(i + 1) % 3], v = F[f][(i + 2) % 3];
+        if (u < v) vd.edges.push_back({f, dc.twins[3 * f + i] / 3, u, v});
+      }
     }
-    vertex[f] = vertex[r];
-  }
-  // The sites around each vertex: the boundary of its polygon, u → v with the next edge from v.
-  std::vector<std::unordered_map<Index, Index>> next(vd.vertices.size());
-  for (Index h = 0; h < 3 * nf; ++h) {
-    const Index f = h / 3, g = twin(h) / 3;
-    const auto& t = dc.faces[f];
-    const Index u = t[h % 3], v = t[(h % 3 + 1) % 3];
-    if (vertex[f] == vertex[g]) continue;
-    next[vertex[f]][u] = v;
-    if (u < v) vd.edges.push_back({vertex[f], vertex[g], u, v});
-  }
-  vd.vertex_sites.resize(vd.vertices.size());
-  for (Index x = 0; x < vd.vertices.size(); ++x) {
-    if (next[x].empty()) throw std::logic_error("voronoi: a vertex without an edge (one circumcentre for all faces)");
-    Index u = next[x].begin()->first;
-    for (std::size_t m = 0; m < next[x].size(); ++m) {
-      vd.vertex_sites[x].push_back(u);
-      u = next[x].at(u);
+    for (int i = 0; i < 3; ++i) {
+      const Index h = 3 * f + i, e = dc.twins[h], g = e / 3;
+      if (e < h || turn[f] != turn[g]) continue;
+      if (turn[f] != ZERO ? in_circle(P[F[f][0]], P[F[f][1]], P[F[f][2]], P[F[g][e % 3]]) == ZERO
+                          : centre.at(f) == centre.at(g))
+        merge.emplace_back(f, g);
     }
+  }
+  if (merge.empty()) return vd;  // one vertex per face, its cells the face (`first` stays empty)
+  vd.cells.clear();
+  vd.edges.clear();
+  std::vector<Index> vx(nf);  // the vertex of each face
+  vd.first.push_back(0);
+  {
+    std::vector<Index> up(nf);  // union-find: the faces of one vertex
+    std::iota(up.begin(), up.end(), Index(0));
+    for (auto [f, g] : merge) up[find(up, f)] = find(up, g);
+    std::vector<Index> rep(nf, Triangulation::none);  // root → vertex
+    std::vector<Index> face;  // vertex → its first face
+    for (Index f = 0; f < nf; ++f) {
+      const Index r = find(up, f);
+      if (rep[r] == Triangulation::none) {
+        rep[r] = static_cast<Index>(face.size());
+        face.push_back(f);
+      }
+      vx[f] = rep[r];
+    }
+    std::vector<Index> border(face.size(), Triangulation::none);  // a half-edge on its boundary
+    std::vector<char> fan(face.size(), 0);
+    for (Index h = 0; h < 3 * nf; ++h) {
+      const Index x = vx[h / 3];
+      if (vx[dc.twins[h] / 3] == x) fan[x] = 1;
+      else if (border[x] == Triangulation::none) border[x] = h;
+    }
+    for (Index x = 0; x < face.size(); ++x) {
+      if (border[x] == Triangulation::none)
+        throw std::logic_error("voronoi: a vertex without an edge (one circumcentre for all faces)");
+      polygon(dc, vx, border[x], vd.cells);
+      vd.first.push_back(static_cast<Index>(vd.cells.size()));
+      if (fan[x]) vd.fans.emplace_back(x, F[face[x]]);
+    }
+  }
+  for (Index h = 0; h < 3 * nf; ++h) {  // u → v in f, between the vertices of f and its twin's
+    const Index f = h / 3, g = dc.twins[h] / 3;
+    const Index u = F[f][(h + 1) % 3], v = F[f][(h + 2) % 3];
+    if (u < v && vx[f] != vx[g]) vd.edges.push_back({vx[f], vx[g], u, v});
   }
   return vd;
 }
+
+}  // namespace
 //< voronoi-dual
 
-VoronoiDiagram voronoi(std::span<const Point> sites) { return voronoi(delaunay_complex(sites)); }
+ExactPoint VoronoiDiagram::vertex(Index v) const {
+  const auto it = std::lower_bound(fans.begin(), fans.end(), v, [](const auto& p, Index x) { return p.first < x; });
+  if (it != fans.end() && it->first == v) return circumcentre(sites[it->second[0]], sites[it->second[1]], sites[it->second[2]]);
+  const auto c = vertex_sites(v);
+  return circumcentre(sites[c[0]], sites[c[1]], sites[c[2]]);
+}
+
+//> voronoi-cell
+std::vector<Index> VoronoiDiagram::cell(Index s) const {
+  // At vertex v, s is followed by a and preceded by b (counter-clockwise around v): the face
+  // (s, a, b) of the complex. The next face counter-clockwise around s is across s–b, the
+  // vertex where s is followed by b.
+  std::unordered_map<Index, Index> after;   // the site after s at a vertex → that vertex
+  std::unordered_map<Index, Index> before;  // vertex → the site before s there
+  for (Index v = 0; v < size(); ++v) {
+    const auto c = vertex_sites(v);
+    for (std::size_t k = 0; k < c.size(); ++k)
+      if (c[k] == s) {
+        after[c[(k + 1) % c.size()]] = v;
+        before[v] = c[(k + c.size() - 1) % c.size()];
+      }
+  }
+  std::vector<Index> out;
+  if (before.empty()) return out;
+  const Index start = before.begin()->first;
+  Index v = start;
+  do {
+    out.push_back(v);
+    v = after.at(before.at(v));
+  } while (v != start && out.size() < before.size());
+  return out;
+}
+//< voronoi-cell
+
+VoronoiDiagram voronoi(const DelaunayComplex& dc) { return dual(dc, dc.points); }
+
+VoronoiDiagram voronoi(std::span<const Point> sites) {
+  DelaunayComplex dc = delaunay_complex(sites);
+  std::vector<Point> p = std::move(dc.points);
+  return dual(dc, std::move(p));
+}
 
 }  // namespace t2

@@ -17,7 +17,7 @@ namespace {
 namespace tr = t2::trace;
 using t2::HullAlgorithm;
 
-T2_PROBLEM({"hull", "vertices", 2});
+T2_PROBLEM({"hull", "vertices", Input::plane});
 
 // The hull by `a`, as a scene.
 std::function<t2::Scene(const Points&)> run(HullAlgorithm a) {

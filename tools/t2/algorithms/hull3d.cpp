@@ -9,7 +9,7 @@
 namespace t2cli::algorithms {
 namespace {
 
-T2_PROBLEM({"hull3d", "vertices", 3});
+T2_PROBLEM({"hull3d", "vertices", Input::space});
 
 // The number of vertices of a hull given by its facets.
 std::size_t vertex_count(const t2::Facets& F) {

@@ -8,7 +8,7 @@
 namespace t2cli::algorithms {
 namespace {
 
-T2_PROBLEM({"layers", "layers", 2});
+T2_PROBLEM({"layers", "layers", Input::plane});
 
 std::function<t2::Scene(const Points&)> run(t2::LayersMethod m) {
   return [m](const Points& P) { return polygons_scene(P, t2::convex_layers(std::span<const t2::Point>(P), m)); };

@@ -29,6 +29,7 @@
 #include "t2/kernel/orient3d.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/scene.hpp"
+#include "t2/kernel/segment.hpp"
 
 namespace t2::trace {
 class Recording;
@@ -39,20 +40,29 @@ namespace t2cli::algorithms {
 using Points = std::vector<t2::Point>;
 
 /// The input of one timed run, made by the worker before the clock starts: points of T² (w = 1)
-/// for the problems of the plane, points of R³ for those of space. A run may take them (std::move).
+/// for the problems of the plane, points of R³ for those of space, segments for those of
+/// segments. A run may take them (std::move).
 struct BenchInput {
   Points points;
   std::vector<t2::Point3> points3;
+  std::vector<t2::Segment> segments;
 };
 
 /// One timed run, prepared (conversions done): returns the answer's size (Problem::size_word).
 using Timed = std::function<std::size_t()>;
 
+/// What a problem's input is.
+enum class Input {
+  plane,     ///< points of T² (the t2 gen point kinds)
+  space,     ///< points of R³ (cube, sphere)
+  segments,  ///< segments of the plane (`t2 gen segments`)
+};
+
 /// What an answer is.
 struct Problem {
-  std::string name;       ///< "hull", "delaunay", "hull3d"
-  std::string size_word;  ///< what the answer's size counts: "vertices", "triangles", "layers"
-  int space = 2;          ///< 2: points of T² (the t2 gen kinds), 3: points of R³ (cube, sphere)
+  std::string name;            ///< "hull", "delaunay", "hull3d"
+  std::string size_word;       ///< what the answer's size counts: "vertices", "triangles", "layers"
+  Input input = Input::plane;  ///< what it takes
 };
 
 /// An algorithm of t2: one registration (file comment).
@@ -62,7 +72,7 @@ struct Algorithm {
   std::string problem{};  ///< a registered Problem
   std::string summary{};  ///< one line for the help texts
   std::string title{};    ///< how an animation's page names it: "Graham's scan"
-  /// Runs it on points of the plane; the answer as a scene (nullptr for points of R³).
+  /// Runs it on points of the plane; the answer as a scene (nullptr for other inputs).
   std::function<t2::Scene(const Points&)> run{};
   /// Runs it with its recorder on the points of the scene `name`, adding every step and the
   /// answer to the recording; throws t2::BadInput or t2::Undefined naming the scene. nullptr:
@@ -120,7 +130,7 @@ struct Registrar {
       ::t2cli::algorithms::type __VA_ARGS__};
 /// Registers an algorithm: T2_ALGORITHM({.name = "graham", .problem = "hull", ...});
 #define T2_ALGORITHM(...) T2_ALGO_REGISTER_(Algorithm, __VA_ARGS__)
-/// Registers a problem: T2_PROBLEM({"hull", "vertices", 2});
+/// Registers a problem: T2_PROBLEM({"hull", "vertices", Input::plane});
 #define T2_PROBLEM(...) T2_ALGO_REGISTER_(Problem, __VA_ARGS__)
 /// Registers a foreign peer: T2_PEER({"cgal", {"hull", "delaunay"}, "CGAL: ...", true});
 #define T2_PEER(...) T2_ALGO_REGISTER_(Peer, __VA_ARGS__)

@@ -21,8 +21,8 @@ namespace {
 
 namespace tr = t2::trace;
 
-T2_PROBLEM({"delaunay", "triangles", 2});
-T2_PROBLEM({"triangulation", "triangles", 2});
+T2_PROBLEM({"delaunay", "triangles", Input::plane});
+T2_PROBLEM({"triangulation", "triangles", Input::plane});
 
 // `f` names the scene when it finds the answer undefined.
 template <class F>

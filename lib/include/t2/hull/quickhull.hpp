@@ -47,7 +47,8 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
   if (S.empty()) return;  // the case the seed forgets
   const ChartOrder<K> order{chart};
   std::size_t h = static_cast<std::size_t>(-1);
-  // farthest from the line a b: extreme in the direction of b − a turned right
+  // farthest right of the line a b: with d = b − a (a direction, on Ω), q is farther right
+  // than p when q − p turns clockwise from d, i.e. orient(p, q, d) > 0 (p, q in front)
   if (chart.front) {
     // rounded: any direction will do, if finite
     const Point &A = P[a], &B = P[b];
@@ -56,7 +57,7 @@ void quickhull_side(std::span<const Point> P, std::size_t a, std::size_t b, cons
       const Point d(0, dx, dy);
       h = extreme_of<K>(P, S, a, b, order,
                         [&](const Point& p, const Point& q) {
-                          return -K::orient(p, q, d);
+                          return K::orient(p, q, d);
                         });
     }
   }

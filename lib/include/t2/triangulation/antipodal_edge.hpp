@@ -45,26 +45,29 @@
 /// angles stay in (0°, 180°)); the bisector is the seed's choice, and it is the only one that
 /// does not depend on the coordinates (it gives both lunes the same angle).
 ///
+/// *Any lunes, not only Algorithm 9's* (the T² Delaunay records its antipodal edges by the same
+/// rule, face_kind.hpp). Let the faces at z other than the two lunes cover the angle θ from the
+/// meridian of w counter-clockwise to that of u, for any θ in (0°, 360°) (θ > 180° is possible
+/// when z is no hull corner). The derivation of B above still holds: n₂ at 90° and n₁ at θ − 90°
+/// differ by |180° − θ| < 180°, so B points at θ/2 with length 2 cos((θ − 180°)/2) > 0. The edge
+/// runs at 180° + θ/2, strictly inside (θ, 360°), the angle the two lunes share, and each lune
+/// has the angle 180° − θ/2 in (0°, 180°): an intersection of two open hemispheres, so (3)
+/// holds word for word and the faces still tile.
+///
 /// *Later insertions.* An insertion replaces one face or two by faces with the same union, so
 /// the tiling persists. The edge z → ¬z is never moved: a point inside a lune leaves one lune
 /// (p, z, ¬z) with the same edge, a point on the edge removes it (figure 5.20), and no new edge
 /// between antipodes appears (a proper triangle lies in an open hemisphere, so it never holds
 /// both a point and its antipode; a lune holds only its own two).
 
+#include <vector>
+
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/sign.hpp"
-#include "t2/triangulation/triangulation.hpp"
+#include "t2/triangulation/face_kind.hpp"  // AntipodalEdge, the record
 
 namespace t2 {
-
-/// The edge z → ¬z made when ¬z was inserted while u → z and z → w were hull edges.
-struct AntipodalEdge {
-  Triangulation::Index z;   ///< the hull vertex
-  Triangulation::Index nz;  ///< its antipode, the point inserted
-  Triangulation::Index u;   ///< the hull vertex before z (hull edge u → z)
-  Triangulation::Index w;   ///< the hull vertex after z (hull edge z → w)
-};
 
 namespace detail {
 

@@ -44,9 +44,11 @@
 ///     hemisphere (tilt ℓ about the midpoint of a₁ a₂) — the convex hull exists. Contrapositive:
 ///     without a hull every face turns counter-clockwise or is flat (orient = 0). Flat faces come
 ///     from an antipodal pair a, ¬a (b̄ = A at a corner of both hulls): the seed's degenerate
-///     face of figure 5.18, a lune bounded by the line through a and its neighbour and the half
-///     great circle from a to ¬a that crosses Ω at the bisector of a's normal cone — the
-///     seed's "bisector of the angle u v w" is exactly the middle of the Voronoi edge a–¬a.
+///     face of figure 5.18, a lune bounded by the line through a and its neighbour and a half
+///     great circle from a to ¬a. Which one is a choice (the dual is combinatorial): the
+///     triangulation records it as Algorithm 9 does, the sphere bisector of the angle the two
+///     lunes leave at a (face_kind.hpp, `Triangulation::antipodal_edges()`), so that the exact
+///     walk of `locate` reads both constructions alike.
 ///  3. *With a hull* (all sites in an open hemisphere, e.g. a few back points near Ω) the
 ///     clockwise band faces are the Voronoi vertices "beyond" the hull, as the farthest-point
 ///     triangles are for front-only input; as there, they are replaced by v∞: each edge between
@@ -279,6 +281,22 @@ inline void append_linked(const std::vector<std::array<Triangulation::Index, 3>>
   }
 }
 
+/// Records every antipodal edge of tr (face_kind.hpp): only faces touching Ω, from `first` on,
+/// can hold one (a planar triangle has its three vertices on one side). For the edge a → b of
+/// the face t = (w, a, b) and the face (u, b, a) across it, the record is {a, b, u, w}: the
+/// edge runs along the sphere bisector of the angle u a w, which lies inside the two lunes
+/// (antipodal_edge.hpp, *Any lunes*), so the faces tile T² with it.
+inline void record_antipodal_edges(Triangulation& tr, Triangulation::Index first) {
+  using Index = Triangulation::Index;
+  for (Index h = 3 * first; h < 3 * tr.size(); ++h) {
+    const Index a = tr.org(h), b = tr.dest(h), e = tr.twin(h);
+    if (e < h || a == Triangulation::infinite || b == Triangulation::infinite) continue;
+    if (!(tr.point(a) == antipode(tr.point(b)))) continue;
+    const Index w = tr.vertex(h / 3, static_cast<int>(h % 3)), u = tr.vertex(e / 3, static_cast<int>(e % 3));
+    if (w != Triangulation::infinite && u != Triangulation::infinite) tr.add_antipodal_edge({a, b, u, w});
+  }
+}
+
 //> delaunay-t2
 /// The Delaunay triangulation of points of T² not all in front (see the file comment); the
 /// planar triangulations of each side use traits K. With `whole_sphere` the clockwise faces of
@@ -330,6 +348,7 @@ Triangulation delaunay_t2(std::span<const Point> input, const K& kernel, bool wh
   const bool back_only = front.empty() && z.empty();  // the mirror of db, v∞ included
   if (df.dimension() == 2) append_planar(df, front, false, false, v, n, open);
   if (db.dimension() == 2) append_planar(db, back, true, back_only, v, n, open);
+  const Index ring_first = static_cast<Index>(v.size() / 3);  // the faces touching Ω from here on
   if (!back_only) {
     RingSide fs{&fp, front.empty() ? std::vector<Index>{} : boundary_cycle(df), front};
     RingSide bs{&bp, back.empty() ? std::vector<Index>{} : boundary_cycle(db), back};
@@ -339,6 +358,7 @@ Triangulation delaunay_t2(std::span<const Point> input, const K& kernel, bool wh
                   open);
   }
   tr.assign(std::move(v), std::move(n));
+  record_antipodal_edges(tr, ring_first);
   tr.finish();
   return tr;
 }

@@ -55,8 +55,8 @@ class T2Builder {
 
  public:
   /// `order[v]` is the input index of point v of tr (the points are in insertion order).
-  T2Builder(Triangulation& tr, std::vector<AntipodalEdge>& lunes, const std::vector<Index>& order, Trace& trace)
-      : tr_(tr), lunes_(lunes), order_(order), trace_(trace) {}
+  T2Builder(Triangulation& tr, const std::vector<Index>& order, Trace& trace)
+      : tr_(tr), order_(order), trace_(trace) {}
 
   /// Inserts the point p (an index into tr's points); returns false when p must wait.
   bool insert(Index p) {
@@ -76,7 +76,7 @@ class T2Builder {
   };
 
   const Point& P(Index v) const { return tr_.point(v); }
-  Sign side(Index t, int i, const Point& p) const { return side_of_edge(tr_, lunes_, t, i, p); }
+  Sign side(Index t, int i, const Point& p) const { return side_of_edge(tr_, t, i, p); }
 
   /// What p is in the closed face t (finite), or `none` (outside it, or t is flat).
   Where classify(Index t, const Point& p) const {
@@ -89,7 +89,7 @@ class T2Builder {
     if (kind == FaceKind::flat) return {};
     for (int i = 0; i < 3; ++i)
       if (P(tr_.vertex(t, i)) == p) return {Where::vertex, t, i};
-    if (kind == FaceKind::proper) {  // one zero: the edge; two: the vertex, handled above
+    if (is_proper(kind)) {  // one zero: the edge; two: the vertex, handled above
       for (int i = 0; i < 3; ++i)
         if (s[i] == ZERO) return on_edge(t, i, p);
     }
@@ -165,10 +165,7 @@ class T2Builder {
         report(trace::Event::duplicate, {order_[p], order_[v]});
         return true;
       }
-      tr_.rename_vertex(w.t, v, p);
-      for (AntipodalEdge& e : lunes_)
-        for (Index* x : {&e.z, &e.nz, &e.u, &e.w})
-          if (*x == v) *x = p;
+      tr_.rename_vertex(w.t, v, p);  // in the antipodal-edge records too
       tr_.add_duplicate(v, p);
       report(trace::Event::duplicate, {order_[v], order_[p]});
       return true;
@@ -176,6 +173,8 @@ class T2Builder {
     if (w.kind == Where::face) {
       tr_.insert_in_face(w.t, p);
     } else {
+      const Index a = tr_.vertex(w.t, (w.i + 1) % 3), b = tr_.vertex(w.t, (w.i + 2) % 3);
+      if (a != kInf && b != kInf && P(a) == antipode(P(b))) drop_antipodal_edge(a, b);  // figure 5.20
       tr_.insert_on_edge(w.t, w.i, p);  // an infinite neighbour stays infinite: inf_ holds
     }
     last_ = w.t;
@@ -235,7 +234,7 @@ class T2Builder {
     tr_.rename_vertex(inf_, kInf, p);  // p replaces v∞ everywhere
     last_ = inf_;
     if (before.first != kNone)  // step 31: the antipode of the hull vertex z
-      lunes_.push_back({before.second, p, before.first, after.second});
+      tr_.add_antipodal_edge({before.second, p, before.first, after.second});
     hull_ = false;
     report(trace::Event::replace, {order_[p]}, {0, 0}, around);
     report(before.first != kNone ? trace::Event::antipode : trace::Event::cover,
@@ -254,8 +253,15 @@ class T2Builder {
     }
   }
 
+  /// Forgets the record of the antipodal edge a–b, which a point inside it splits (figure 5.20).
+  void drop_antipodal_edge(Index a, Index b) {
+    std::vector<AntipodalEdge> kept;
+    for (const AntipodalEdge& e : tr_.antipodal_edges())
+      if (!((e.z == a && e.nz == b) || (e.z == b && e.nz == a))) kept.push_back(e);
+    tr_.set_antipodal_edges(std::move(kept));
+  }
+
   Triangulation& tr_;
-  std::vector<AntipodalEdge>& lunes_;
   const std::vector<Index>& order_;
   Trace& trace_;
   bool hull_ = true;
@@ -302,8 +308,11 @@ TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how,
   }
   if (orient(P[0], P[b], P[c]) > 0) tr.make_triangle(0, b, c, n);
   else tr.make_triangle(b, 0, c, n);
-  tell(trace, [&] { return trace::about(trace::Event::start, tr, order, {order[tr.vertex(0, 0)], order[tr.vertex(0, 1)], order[tr.vertex(0, 2)]}); });
-  detail::T2Builder<std::remove_reference_t<Trace>> builder(tr, out.lunes, order, trace);
+  tell(trace, [&] {
+    const std::size_t u = order[tr.vertex(0, 0)], v = order[tr.vertex(0, 1)];
+    return trace::about(trace::Event::start, tr, order, {u, v, order[tr.vertex(0, 2)]});
+  });
+  detail::T2Builder<std::remove_reference_t<Trace>> builder(tr, order, trace);
   std::vector<Index> waiting;  // points whose antipode lies inside a hull edge
   for (Index p = 1; p < n; ++p) {
     if (p == b || p == c) continue;
@@ -331,9 +340,7 @@ TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how,
     detail::undefined_t2(input, order[still.front()], order[e0], order[e1]);
   }
   tell(trace, [&] { return trace::about(trace::Event::done, tr, order, {}); });
-  for (AntipodalEdge& e : out.lunes)
-    for (Index* x : {&e.z, &e.nz, &e.u, &e.w}) *x = order[*x];
-  tr.renumber(std::move(order), input);
+  tr.renumber(std::move(order), input);  // the antipodal-edge records too
   tr.finish();
   out.tr = std::move(tr);
   return out;

@@ -64,15 +64,15 @@
 #include <vector>
 
 #include "t2/kernel/point.hpp"
-#include "t2/triangulation/antipodal_edge.hpp"
+#include "t2/triangulation/face_kind.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
 
-/// A triangulation of T² input with the antipodal edges it contains.
+/// A triangulation of T² input by Algorithm 9. Its antipodal edges are recorded in the
+/// triangulation itself (`tr.antipodal_edges()`, face_kind.hpp), as the T² Delaunay's are.
 struct TriangulationT2 {
-  Triangulation tr;                   ///< the faces (lunes and flat faces included)
-  std::vector<AntipodalEdge> lunes;   ///< one entry per antipodal edge z → ¬z ever created
+  Triangulation tr;  ///< the faces (lunes and flat faces included) and the antipodal edges
 };
 
 /// The order in which `triangulate_t2` inserts the points.
@@ -86,21 +86,5 @@ enum class InsertionOrder {
 /// the equal point of smallest input index). Throws `Undefined` in the cases of the file
 /// comment, `BadInput` for more than 715 827 882 points.
 TriangulationT2 triangulate_t2(std::span<const Point> input, InsertionOrder how = InsertionOrder::spatial);
-
-/// What a face is: a proper triangle (orient > 0), a lune (two antipodal vertices, orient 0)
-/// or flat (orient 0, no antipodal pair: three vertices on one great circle, no area).
-enum class FaceKind {
-  proper,  ///< orient > 0
-  lune,    ///< two antipodal vertices: the region between two half great circles
-  flat     ///< three vertices on one great circle, no two antipodal: no area
-};
-
-/// The kind of the finite face t of tr.
-FaceKind face_kind(const Triangulation& tr, Triangulation::Index t);
-
-/// The exact side of p of the edge opposite slot i of the finite face t: orient for an edge
-/// between points that are not antipodal, `side_of_antipodal_edge` for an edge z → ¬z.
-Sign side_of_edge(const Triangulation& tr, std::span<const AntipodalEdge> lunes, Triangulation::Index t, int i,
-                  const Point& p);
 
 }  // namespace t2

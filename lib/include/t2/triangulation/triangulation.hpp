@@ -37,12 +37,18 @@
 ///     operation below keeps it: an insertion sets it for the new point and the ring around
 ///     it, a flip for the two vertices that lose a triangle (2 stores), `rename_vertex`,
 ///     `renumber`, `assign` and `assemble` for what they change. It costs 4 bytes a point.
+///  6. *The antipodal edges* (face_kind.hpp): every edge between antipodal vertices has exactly
+///     one record in `antipodal_edges()`, which says along which half great circle it runs;
+///     `rename_vertex` and `renumber` keep the records' indices. Empty for planar input.
 ///
 /// **Queries** (triangulation_query.cpp): `edges()`, each undirected edge once as a half-edge;
 /// the *star* of a vertex, `incident_faces(v)` and `neighbors(v)`, counter-clockwise around v
 /// from `face_of(v)` (one step across the edge v → neighbour per triangle, no search);
-/// `locate(p, hint)`, the walk below with the exact orient; `nearest_vertex(p, hint)`, a greedy
-/// walk over neighbours with the exact `compare_distance`.
+/// `locate(p, hint)`, exact on all of T² (triangulation_query.cpp: the walk below with the exact
+/// orient for front points in a planar triangulation, otherwise a visibility walk with the exact
+/// `side_of_edge` of face_kind.hpp); `nearest_vertex(p, hint)`, a greedy walk over neighbours
+/// with the exact `compare_distance`, exact in T² on the T² Delaunay (triangulation_query.cpp
+/// proves when, and scans when the walk would not be).
 ///
 /// **The remembering stochastic walk** (Devillers, Pion and Teillaud, "Walking in a
 /// triangulation", 2002). From a triangle, test the edges other than the one we came through,
@@ -72,6 +78,7 @@
 
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/sign.hpp"
+#include "t2/triangulation/face_kind.hpp"
 
 namespace t2 {
 
@@ -146,7 +153,7 @@ class Triangulation {
   /// Bytes held by the arrays (capacities, not sizes): the memory figure of the benchmark.
   std::size_t memory_bytes() const {
     return points_.capacity() * sizeof(Point) + (v_.capacity() + n_.capacity() + link_.capacity()) * sizeof(Index) +
-           duplicates_.capacity() * sizeof(duplicates_[0]);
+           duplicates_.capacity() * sizeof(duplicates_[0]) + antipodal_.capacity() * sizeof(AntipodalEdge);
   }
   /// Each undirected edge once, as the half-edge h = 3t + i with h < twin(h) (edges at v∞
   /// included: 3T/2 of them for T triangles); its endpoints are org(h) and dest(h).
@@ -160,20 +167,34 @@ class Triangulation {
   /// the k-th being the vertex after v in the k-th triangle of incident_faces(v).
   Star neighbors(Index v) const;
 
-  /// Locates p with the walk below and the exact `orient`, from triangle `hint` (any index:
-  /// taken modulo size()). For a triangulation of front points with v∞ (dimension 2) and a front
-  /// point p; throws `Undefined` for a point not in front or a triangulation without v∞ (T²
-  /// input without a hull: its lunes need the sides of antipodal_edge.hpp, which only
-  /// Algorithm 9's walk has so far), std::logic_error in dimension < 2.
+  /// Locates any point p of T² (front, back or on Ω), exactly, from triangle `hint` (any index:
+  /// taken modulo size()), in any triangulation of dimension 2 (planar, the T² Delaunay,
+  /// Algorithm 9's, lunes and flat faces included). The answer: `vertex` (p is vertex(t, i)),
+  /// `edge` (p is inside the edge opposite slot i of t, a face that is not flat; where flat
+  /// faces lie on one another their edges overlap, and the answer is one of those that hold
+  /// p), `face` with t
+  /// finite (p strictly inside the proper face or lune t), or `face` with t infinite (p is
+  /// outside the closed hull, strictly beyond the hull edge of t: orient > 0 with the edge
+  /// (vertex(t, i + 1), vertex(t, i + 2)), i the slot of v∞; one such t when p sees several).
+  /// Throws std::logic_error in dimension < 2.
   Location locate(const Point& p, Index hint = 0) const;
-  /// The vertex nearest to p (exact `compare_distance`; one of the nearest when several tie),
-  /// for a *Delaunay* triangulation of front points and a front point p: locate p from `hint`,
-  /// then move to a strictly nearer neighbour while there is one (triangulation_query.cpp proves
-  /// that this stops at a nearest vertex). On another triangulation it returns a vertex no
-  /// neighbour of which is nearer. Throws as `locate`.
+  /// The vertex nearest to p in T² (exact `compare_distance`; one of the nearest when several
+  /// tie), for a *Delaunay* triangulation (planar or T², `delaunay`): a greedy walk over
+  /// neighbours from the face that holds p, where triangulation_query.cpp proves it stops at a
+  /// nearest vertex (p proper and a site on p's side); a scan of the vertices where the walk
+  /// can stop short (p proper and no site on its side, or p on Ω). On another triangulation the
+  /// walk returns a vertex no neighbour of which is nearer. Throws `Undefined` for p on Ω when
+  /// its nearest sites include a front and a back one (compare_distance is undefined there and
+  /// no site on Ω is nearer), std::logic_error in dimension < 2.
   Index nearest_vertex(const Point& p, Index hint = 0) const;
+  /// The antipodal edges and how each runs (invariant 6, face_kind.hpp).
+  const std::vector<AntipodalEdge>& antipodal_edges() const { return antipodal_; }
+  /// Records the antipodal edge e (the constructions, when they make it).
+  void add_antipodal_edge(const AntipodalEdge& e) { antipodal_.push_back(e); }
+  /// Replaces the records (Algorithm 9, when a point splits an antipodal edge).
+  void set_antipodal_edges(std::vector<AntipodalEdge> edges) { antipodal_ = std::move(edges); }
 
-  /// Checks invariants 1–5 of the file comment exactly; returns an empty string or what is wrong.
+  /// Checks invariants 1–6 of the file comment exactly; returns an empty string or what is wrong.
   std::string validate() const;
   /// True when validate() finds nothing wrong.
   bool valid() const { return validate().empty(); }
@@ -221,7 +242,7 @@ class Triangulation {
     relink();
   }
   /// Makes index `to` take the place of vertex `from` in every triangle around it (t holds
-  /// `from`); used when a duplicate of smaller index arrives.
+  /// `from`) and in the antipodal-edge records; used when a duplicate of smaller index arrives.
   void rename_vertex(Index t, Index from, Index to);
   /// Gives vertex k the index order[k] everywhere (triangles, duplicates) and replaces the
   /// points by a copy of `input`, where input[order[k]] is the old point k: the algorithms build
@@ -276,6 +297,7 @@ class Triangulation {
   std::vector<Index> n_;  // 3 twin half-edges per triangle
   std::vector<Index> link_;  // link_[v + 1]: a triangle of vertex v; link_[0]: of v∞ (invariant 5)
   std::vector<std::pair<Index, Index>> duplicates_;
+  std::vector<AntipodalEdge> antipodal_;  // invariant 6
   int dimension_ = -1;
 };
 

@@ -59,9 +59,11 @@
 /// *Not built yet* (`std::runtime_error`, issue 24): collinear sites not all on one side; one
 /// site on Ω with the sites of one side collinear.
 ///
-/// **Cost.** One `delaunay` (or delaunay_t2) and, for (1), Lawson's flips on the h hull corners
-/// from a fan: O(h²) flips in the worst case (the upper lifted hull stands in for lawson.hpp's
-/// lower one), O(h) for cocircular corners; h is O(log n) for uniform points.
+/// **Cost.** One `delaunay` (or delaunay_t2), whose triangles and twins are copied as they are
+/// (no search), and, for (1), Lawson's flips on the h hull corners from a fan: O(h²) flips in
+/// the worst case (the upper lifted hull stands in for lawson.hpp's lower one), O(h) for
+/// cocircular corners; h is O(log n) for uniform points. The faces beyond the hull (and the
+/// flat fans of collinear sites) are linked to their twins through a hash of their edges.
 
 #include <array>
 #include <span>
@@ -78,6 +80,16 @@ struct DelaunayComplex {
   using Index = Triangulation::Index;  ///< site indices
   std::vector<Point> points;           ///< the sites, as given
   std::vector<std::array<Index, 3>> faces;  ///< counter-clockwise around their Voronoi vertex
+  /// The adjacency, as triangulation.hpp stores it: `twins[3f + i]` = 3g + j when the edge of
+  /// face f opposite slot i (from faces[f][i + 1] to faces[f][i + 2], indices mod 3) is the edge
+  /// of face g opposite slot j, in reverse. An involution without fixed points.
+  std::vector<Index> twins;
+  /// The turn of each face: for a *proper* face — three sites on one side of T², not collinear —
+  /// the sign of orient(a, b, c) (homogeneous, so for back sites the opposite of their drawn
+  /// turn); ZERO for the others (a site on Ω, sites on both sides, or collinear). Kept from the
+  /// construction where it is known (the front triangles turn counter-clockwise, the farthest
+  /// ones clockwise, the fans are flat), computed by `orient` elsewhere.
+  std::vector<Sign> turns;
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept), sorted by dropped
   int dimension = -1;  ///< −1 no site, 0 one distinct site, 1 two distinct sites, 2 faces exist
 };

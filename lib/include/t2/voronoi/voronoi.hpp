@@ -6,8 +6,23 @@
 /// **Vertices.** One per Voronoi vertex: the T² circumcentre of a face of the complex
 /// (`circumcentre`, below), in exact homogeneous integer coordinates (no division): w > 0 in
 /// front, w < 0 behind, w = 0 on Ω. Adjacent faces with the same circumcentre (cocircular
-/// sites) are one vertex, where four or more cells meet; `vertex_sites[v]` lists the sites of
+/// sites) are one vertex, where four or more cells meet; `vertex_sites(v)` lists the sites of
 /// its cells counter-clockwise around it (the boundary of its polygon in the complex).
+/// `voronoi` itself is combinatorial and uses filtered predicates only: `vertex(v)` constructs
+/// the exact centre (GMP integers) when it is asked for.
+///
+/// **When two faces are one vertex** (the proof behind the merge). Call a face *proper* when
+/// its three sites are on one side of T² and not collinear; its centre is [2A, −B, −C] with
+/// A ≠ 0 (below), so not on Ω, while the centre of any other face is on Ω. Two adjacent proper
+/// faces f = (a, b, c) and g, sharing the edge b c with d the other site of g, have the same
+/// centre exactly when in_circle(a, b, c, d) = 0 and orient(f) = orient(g): equal centres
+/// have equal distances to b and c, hence one circle through a, b, c, d; conversely one circle
+/// gives coefficient vectors (A, B, C, D) of f and g that are multiples of each other, and the
+/// factor is positive exactly when A_f and A_g = w³ · orient have the same sign (the sites of
+/// f and g are on one side, so w³ has one sign) — with opposite signs the centres are
+/// antipodal (the front and back vertices of cocircular front sites). Two adjacent faces of
+/// which one only is proper never share their centre; two adjacent faces that are not proper
+/// (few: along Ω, the hull's flat fans, collinear sites) compare their exact centres.
 ///
 /// **Edges.** One per edge of the complex between faces of different vertices: the Voronoi
 /// edge from vertex a to vertex b on the bisector of its two sites s and t. No edge has length
@@ -28,6 +43,7 @@
 /// (two sites on Ω, or a front, an Ω and a back site), whose vertex on Ω is at the middle of an
 /// arc of Ω (irrational in general) or at 90° from a site of Ω.
 
+#include <array>
 #include <span>
 #include <utility>
 #include <vector>
@@ -37,7 +53,7 @@
 
 namespace t2 {
 
-/// The Voronoi diagram of T² (see the file comment).
+/// The Voronoi diagram of T² (see the file comment), as `voronoi` fills it.
 struct VoronoiDiagram {
   using Index = Triangulation::Index;  ///< site and vertex indices
   /// A Voronoi edge from vertex `a` to vertex `b` between the cells of sites `s` and `t`.
@@ -47,11 +63,32 @@ struct VoronoiDiagram {
     Index s;  ///< the site on one side
     Index t;  ///< the site on the other side
   };
-  std::vector<ExactPoint> vertices;              ///< exact homogeneous circumcentres
-  std::vector<std::vector<Index>> vertex_sites;  ///< the cells at each vertex, counter-clockwise
-  std::vector<Edge> edges;                       ///< between two vertices
-  std::vector<std::pair<Index, Index>> lines;    ///< bisectors without a vertex (two sites)
+  std::vector<Point> sites;  ///< the sites, as given
+  /// The cells at vertex v, counter-clockwise around it, are cells[first[v] .. first[v + 1]);
+  /// `first` is empty when every vertex has three cells: they are cells[3v .. 3v + 3).
+  std::vector<Index> first;
+  std::vector<Index> cells;  ///< the sites at each vertex, one vertex after the other
+  /// (v, a face of the complex at v) for each vertex where several faces meet, sorted by v: the
+  /// three sites whose circumcentre is v. Any other vertex is the circumcentre of its cells.
+  std::vector<std::pair<Index, std::array<Index, 3>>> fans;
+  std::vector<Edge> edges;                          ///< between two vertices
+  std::vector<std::pair<Index, Index>> lines;       ///< bisectors without a vertex (two sites)
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept): sites owning no cell
+
+  /// The number of Voronoi vertices.
+  std::size_t size() const { return first.empty() ? cells.size() / 3 : first.size() - 1; }
+  /// The sites whose cells meet at vertex v, counter-clockwise around it.
+  std::span<const Index> vertex_sites(Index v) const {
+    if (first.empty()) return std::span<const Index>(cells).subspan(3 * std::size_t(v), 3);
+    return std::span<const Index>(cells).subspan(first[v], first[v + 1] - first[v]);
+  }
+  /// Vertex v: its exact homogeneous coordinates (constructed on each call: GMP integers).
+  ExactPoint vertex(Index v) const;
+  /// The cell of site s as a polygon of T²: the vertices on its boundary, counter-clockwise
+  /// around s (consecutive ones joined by an edge between s and a neighbour; `vertex(v)` gives
+  /// their coordinates). Empty for a dropped duplicate or without vertices (fewer than three
+  /// distinct sites). By a scan of all vertices: O(cells.size()) a call.
+  std::vector<Index> cell(Index s) const;
 };
 
 /// The T² circumcentre of the face (a, b, c) of a Delaunay complex (file comment), exact.

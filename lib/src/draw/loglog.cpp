@@ -1,5 +1,5 @@
-// The log-log plot of `t2 bench`: see bench_plot.hpp.
-#include "bench_plot.hpp"
+// Power-law fits and the log-log plot: see loglog.hpp.
+#include <t2/draw/loglog.hpp>
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -9,10 +9,40 @@
 #include <cmath>
 #include <limits>
 #include <regex>
+#include <set>
 
-#include "bench_stats.hpp"
+namespace t2::draw {
 
-namespace t2bench {
+bool fit_defined(std::span<const double> n, std::span<const double> t) {
+  std::set<double> sizes;
+  for (std::size_t i = 0; i < n.size() && i < t.size(); ++i)
+    if (n[i] > 0 && t[i] > 0) sizes.insert(n[i]);
+  return sizes.size() >= 2;
+}
+
+PowerLaw fit_power_law(std::span<const double> n, std::span<const double> t) {
+  PowerLaw f;
+  double sx = 0, sy = 0;
+  std::vector<std::pair<double, double>> xy;
+  for (std::size_t i = 0; i < n.size() && i < t.size(); ++i) {
+    if (n[i] <= 0 || t[i] <= 0) continue;
+    xy.emplace_back(std::log(n[i]), std::log(t[i]));
+    sx += xy.back().first;
+    sy += xy.back().second;
+  }
+  f.points = xy.size();
+  if (!fit_defined(n, t)) return f;
+  const double mx = sx / double(xy.size()), my = sy / double(xy.size());
+  double sxx = 0, sxy = 0;  // centred sums: no cancellation between large logs
+  for (const auto& [x, y] : xy) {
+    sxx += (x - mx) * (x - mx);
+    sxy += (x - mx) * (y - my);
+  }
+  f.exponent = sxy / sxx;
+  f.constant = std::exp(my - f.exponent * mx);
+  return f;
+}
+
 namespace {
 
 constexpr double kWidth = 640, kHeight = 440;
@@ -49,7 +79,7 @@ void text(cairo_t* cr, double x, double y, const std::string& s, int halign, dou
 
 }  // namespace
 
-std::string plot_svg(const std::vector<Series>& series, const std::string& title, const std::string& y_label) {
+std::string loglog_svg(const std::vector<Series>& series, const std::string& title, const std::string& y_label) {
   double nlo = std::numeric_limits<double>::max(), nhi = 0, tlo = nlo, thi = 0;
   for (const auto& s : series)
     for (std::size_t i = 0; i < s.n.size() && i < s.t.size(); ++i)
@@ -112,7 +142,7 @@ std::string plot_svg(const std::vector<Series>& series, const std::string& title
       cairo_fill(cr);
     }
     if (fit_defined(s.n, s.t)) {  // the fitted line across the whole frame, dashed
-      const Fit f = fit_power_law(s.n, s.t);
+      const PowerLaw f = fit_power_law(s.n, s.t);
       const double n0 = std::pow(10, xa), n1 = std::pow(10, xb);
       const double dash[] = {5, 4};
       cairo_set_dash(cr, dash, 2, 0);
@@ -151,4 +181,4 @@ std::string plot_svg(const std::vector<Series>& series, const std::string& title
   return std::regex_replace(bytes, surface_id, R"(id="surface1")");
 }
 
-}  // namespace t2bench
+}  // namespace t2::draw

@@ -1,0 +1,22 @@
+// The Voronoi diagram of T² (chapter 11, t2/voronoi/voronoi.hpp), one registration: timed by
+// `t2 bench` on points of the plane; not yet animated. Its peers (Boost.Polygon's sweep, CGAL's
+// Delaunay and its dual) are timed on the same integer points by bench/bench_voronoi.cpp: the
+// worker's inputs are doubles, which Boost.Polygon does not take.
+#include "algorithms/registry.hpp"
+#include "t2/voronoi/voronoi.hpp"
+
+namespace t2cli::algorithms {
+namespace {
+
+T2_PROBLEM({"voronoi", "vertices", Input::plane});
+
+T2_ALGORITHM({.name = "voronoi",  // what `t2 voronoi` runs
+              .problem = "voronoi",
+              .summary = "t2::voronoi: the dual of the Delaunay complex of T2, front and back vertices (Algorithm 11)",
+              .title = "the Voronoi diagram of T2 (the dual)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] { return t2::voronoi(std::span<const t2::Point>(P)).size(); };
+              }});
+
+}  // namespace
+}  // namespace t2cli::algorithms
