@@ -86,6 +86,7 @@ std::vector<IntersectionPoint> intersections_brute(const std::vector<Segment>& s
     v.push_back(i);
     v.push_back(j);
   };
+  //> brute-pairs
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = i + 1; j < n; ++j) {
       if (disjoint(boxes[i], boxes[j])) continue;
@@ -99,6 +100,7 @@ std::vector<IntersectionPoint> intersections_brute(const std::vector<Segment>& s
       }
     }
   }
+  //< brute-pairs
   std::vector<IntersectionPoint> out;
   out.reserve(found.size());
   for (auto& [k, v] : found) {
