@@ -79,28 +79,35 @@ void examples() {
   print_listing(vd);
   std::cout << "vertices: " << vd.size() << " (" << sides(vd) << "), edges: " << vd.edges.size() << "\n";
   //> farthest-check
-  // The antipodal theorem, against brute force: the farthest-point Voronoi vertices of the
-  // sites are the centres of the circles through three sites that hold every site.
-  std::set<std::pair<double, double>> brute, back;
-  const std::size_t n = kSix.size();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      for (std::size_t k = j + 1; k < n; ++k) {
-        if (t2::orient(kSix[i], kSix[j], kSix[k]) == t2::ZERO) continue;
-        const ExactPoint c = t2::circumcentre(kSix[i], kSix[j], kSix[k]);
-        const ExactPoint f = t2::sign_of(c.w()) > 0 ? c : t2::antipode(c);  // in front
-        bool holds_all = true;  // no site farther from f than site i
-        const ExactPoint si = t2::to_exact(kSix[i]);
-        for (const Point& d : kSix)
-          holds_all = holds_all && t2::compare_distance(t2::to_exact(d), si, f) <= 0;
-        const Point p = t2::to_double(f);
-        if (holds_all) brute.insert({p.x() / p.w(), p.y() / p.w()});
+  // The antipodal theorem, against brute force in rationals: the farthest-point Voronoi
+  // vertices are the centres of the circles through three sites that hold every site.
+  using Q = t2::Rational;
+  std::set<std::pair<Q, Q>> brute, back;
+  std::vector<std::pair<Q, Q>> S;
+  for (const Point& p : kSix)
+    S.emplace_back(t2::to_rational(p.x()), t2::to_rational(p.y()));
+  auto d2 = [](const std::pair<Q, Q>& u, const std::pair<Q, Q>& v) {
+    const Q dx = u.first - v.first, dy = u.second - v.second;
+    return Q(dx * dx + dy * dy);
+  };
+  for (std::size_t i = 0; i < S.size(); ++i)
+    for (std::size_t j = i + 1; j < S.size(); ++j)
+      for (std::size_t k = j + 1; k < S.size(); ++k) {
+        const auto& [ax, ay] = S[i];
+        const auto& [bx, by] = S[j];
+        const auto& [cx, cy] = S[k];
+        const Q det = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
+        if (det == 0) continue;  // collinear
+        const Q a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+        const std::pair<Q, Q> z((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / det,
+                                (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / det);
+        bool holds_all = true;
+        for (const auto& d : S) holds_all = holds_all && d2(d, z) <= d2(S[i], z);
+        if (holds_all) brute.insert(z);
       }
   for (Index v = 0; v < vd.size(); ++v) {
     const ExactPoint x = vd.vertex(v);
-    if (side(x) >= 0) continue;
-    const Point p = t2::to_double(x);  // drawn at (x/w, y/w), the spot of its antipode
-    back.insert({p.x() / p.w(), p.y() / p.w()});
+    if (side(x) < 0) back.emplace(Q(x.x()) / x.w(), Q(x.y()) / x.w());  // its drawn spot
   }
   std::cout << "farthest-point vertices by brute force: " << brute.size()
             << "; back Voronoi vertices: " << back.size() << "; drawn at the same spots: "
