@@ -120,7 +120,8 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
 }  // namespace
 
 //> farthest-delaunay
-std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<const Point> corners) {
+std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(
+    std::span<const Point> corners) {
   const Index m = static_cast<Index>(corners.size());
   std::vector<Face> fan;
   for (Index i = 1; i + 1 < m; ++i) fan.push_back({0, i, i + 1});
@@ -137,9 +138,10 @@ std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<con
     const Index e = tr.twin(t, i), u = e / 3;
     if (tr.is_infinite(t) || tr.is_infinite(u)) continue;  // hull edges stay
     const Point& d = tr.point(tr.vertex(u, static_cast<int>(e % 3)));
-    // Legal when the circle of t holds d (inside or on): every circle must hold every corner.
-    if (in_circle(tr.point(tr.vertex(t, 0)), tr.point(tr.vertex(t, 1)), tr.point(tr.vertex(t, 2)), d) != NEGATIVE)
-      continue;
+    // Legal when the circle of t holds d (inside or on): every circle must hold every
+    // corner.
+    const Point &a = tr.point(tr.vertex(t, 0)), &b = tr.point(tr.vertex(t, 1));
+    if (in_circle(a, b, tr.point(tr.vertex(t, 2)), d) != NEGATIVE) continue;
     tr.flip(t, i);  // strictly convex: the corners are in strictly convex position
     stack.insert(stack.end(), {3 * t, 3 * t + 2, 3 * u, 3 * u + 1});
   }

@@ -60,14 +60,17 @@ ExactPoint circumcentre(const Point& a, const Point& b, const Point& c) {
     const Integer C = det3(P[0], X[0], W[0], P[1], X[1], W[1], P[2], X[2], W[2]);
     return ExactPoint(Integer(2 * A), Integer(-B), Integer(-C));
   }
-  for (int i = 0; i < 3; ++i) {  // a pair p → q on one side; with three, one holding the middle
+  // A pair p → q on one side; with three, one holding the middle.
+  for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     if (s[i] == ZERO || s[i] != s[j]) continue;
     if (one_side && between(*v[i], *v[k], *v[j])) continue;  // p → q is the long edge
     return pole(e[i], e[j]);
   }
-  throw std::runtime_error("voronoi: the vertex of the face " + to_string(a) + ", " + to_string(b) + ", " +
-                           to_string(c) + " (no two proper sites on one side) is not built yet (issue 24)");
+  throw std::runtime_error("voronoi: the vertex of the face " + to_string(a) + ", " +
+                           to_string(b) + ", " + to_string(c) +
+                           " (no two proper sites on one side) is not built yet"
+                           " (issue 24)");
 }
 //< circumcentre
 
@@ -135,13 +138,16 @@ VoronoiDiagram dual(const DelaunayComplex& dc, std::vector<Point> sites) {
         if (u < v) vd.edges.push_back({f, dc.twins[3 * f + i] / 3, u, v});
       }
     }
-    for (int i = 0; i < 3; ++i) {
+    //> voronoi-merge
+    for (int i = 0; i < 3; ++i) {  // f and its neighbour g across slot i, once per edge
       const Index h = 3 * f + i, e = dc.twins[h], g = e / 3;
       if (e < h || turn[f] != turn[g]) continue;
-      if (turn[f] != ZERO ? in_circle(P[F[f][0]], P[F[f][1]], P[F[f][2]], P[F[g][e % 3]]) == ZERO
+      const Point& d = P[F[g][e % 3]];  // the site of g across the edge
+      if (turn[f] != ZERO ? in_circle(P[F[f][0]], P[F[f][1]], P[F[f][2]], d) == ZERO
                           : centre.at(f) == centre.at(g))
         merge.emplace_back(f, g);
     }
+    //< voronoi-merge
   }
   if (merge.empty()) return vd;  // one vertex per face, its cells the face (`first` stays empty)
   vd.cells.clear();
