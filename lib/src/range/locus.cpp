@@ -1,0 +1,93 @@
+// The locus method of counting (range/locus.hpp): Algorithms 17 and 18 of seed 000.
+#include "t2/range/locus.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "t2/kernel/bbox.hpp"
+
+namespace t2 {
+namespace {
+
+bool less(const ExactT1& a, const ExactT1& b) { return compare(a, b) == NEGATIVE; }
+
+// The distinct values, increasing.
+std::vector<ExactT1> distinct(std::vector<ExactT1> v) {
+  std::sort(v.begin(), v.end(), less);
+  v.erase(std::unique(v.begin(), v.end(), [](const ExactT1& a, const ExactT1& b) { return compare(a, b) == ZERO; }),
+          v.end());
+  return v;
+}
+
+// The number of values of v below x, and at most x.
+std::size_t below(const std::vector<ExactT1>& v, const ExactT1& x) {
+  return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x, less) - v.begin());
+}
+std::size_t at_most(const std::vector<ExactT1>& v, const ExactT1& x) {
+  return static_cast<std::size_t>(std::upper_bound(v.begin(), v.end(), x, less) - v.begin());
+}
+
+int omega_slot(int sx, int sy) { return (sx + 1) * 3 + (sy + 1); }
+
+}  // namespace
+
+LocusCounter::LocusCounter(std::span<const Point> points) {
+  if (points.size() > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("LocusCounter: more points than 32-bit counts hold");
+  std::vector<ExactPoint> on[2];
+  for (const Point& p : points) {
+    if (p.w() == 0) {
+      ++omega_[omega_slot(sign_of(p.x()), sign_of(p.y()))];
+      continue;
+    }
+    on[p.w() > 0 ? 0 : 1].push_back(to_exact(p));
+  }
+  for (int s = 0; s < 2; ++s) {
+    Grid& g = side_[s];
+    std::vector<ExactT1> xs, ys;
+    for (const ExactPoint& p : on[s]) {
+      xs.push_back(detail::cartesian_t1(p.w(), p.x()));
+      ys.push_back(detail::cartesian_t1(p.w(), p.y()));
+    }
+    g.xs = distinct(xs);
+    g.ys = distinct(ys);
+    const std::size_t ny = g.ys.size() + 1;
+    g.q.assign((g.xs.size() + 1) * ny, 0);
+    //> locus-build
+    for (std::size_t k = 0; k < xs.size(); ++k)  // C: a point counts at the corner above-right of it
+      ++g.q[(below(g.xs, xs[k]) + 1) * ny + below(g.ys, ys[k]) + 1];
+    for (std::size_t i = 1; i <= g.xs.size(); ++i)  // Q(i, j): the points with x rank < i, y rank < j
+      for (std::size_t j = 1; j < ny; ++j)
+        g.q[i * ny + j] += g.q[(i - 1) * ny + j] + g.q[i * ny + j - 1] - g.q[(i - 1) * ny + j - 1];
+    //< locus-build
+  }
+}
+
+std::size_t LocusCounter::count(const ExactIsoRect& r) const {
+  const ExactBBox b = bbox(r);
+  std::size_t n = 0;
+  // Ω: the vertex b or d, or the quarter from b to d (both axis directions and the quadrant).
+  const bool ix = is_infinite(r.dx()), iy = is_infinite(r.dy());
+  const int sx = sign_of(b.vertex(1).x()), sy = sign_of(b.vertex(3).y());
+  if (ix) n += omega_[omega_slot(sx, 0)];
+  if (iy) n += omega_[omega_slot(0, sy)];
+  if (ix && iy) n += omega_[omega_slot(sx, sy)];
+  //> locus-query
+  const Grid& g = side_[r.a().w() > 0 ? 0 : 1];
+  const std::size_t i0 = below(g.xs, b.xmin()), i1 = at_most(g.xs, b.xmax());
+  const std::size_t j0 = below(g.ys, b.ymin()), j1 = at_most(g.ys, b.ymax());
+  n += g.at(i1, j1) - g.at(i0, j1) - g.at(i1, j0) + g.at(i0, j0);
+  //< locus-query
+  return n;
+}
+
+std::size_t LocusCounter::count(const IsoRect& r) const {
+  const auto t1 = [](const T1& v) {  // exactly, scaled by a positive power of two
+    const ExactPoint e = to_exact(Point(v.w(), v.x(), 0));
+    return ExactT1(e.w(), e.x());
+  };
+  return count(ExactIsoRect(to_exact(r.a()), t1(r.dx()), t1(r.dy()), r.orientation()));
+}
+
+}  // namespace t2
