@@ -96,8 +96,7 @@ TEST(Locus, DoubleRectanglesAreConvertedExactly) {
   // [0.1, 0.3] × [0.2, 0.2] as doubles: the corner is the double 0.1 and the extent 0.2 (as
   // doubles), and 0.1 + 0.2 > 0.3 in exact arithmetic, so both front points are inside.
   const t2::IsoRect r(Point::cartesian(0.1, 0.2), t2::T1(1, 0.2), t2::T1(1, 0));
-  const ExactIsoRect e(t2::to_exact(r.a()), ExactT1(t2::to_exact(Point(1, 0.2, 0)).w(), t2::to_exact(Point(1, 0.2, 0)).x()),
-                       ExactT1(1, 0));
+  const ExactIsoRect e(t2::to_exact(r.a()), t2::to_exact(r.dx()), ExactT1(1, 0));
   EXPECT_EQ(L.count(r), brute(P, e));
   EXPECT_EQ(L.count(r), 2u);
 }

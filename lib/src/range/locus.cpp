@@ -83,11 +83,7 @@ std::size_t LocusCounter::count(const ExactIsoRect& r) const {
 }
 
 std::size_t LocusCounter::count(const IsoRect& r) const {
-  const auto t1 = [](const T1& v) {  // exactly, scaled by a positive power of two
-    const ExactPoint e = to_exact(Point(v.w(), v.x(), 0));
-    return ExactT1(e.w(), e.x());
-  };
-  return count(ExactIsoRect(to_exact(r.a()), t1(r.dx()), t1(r.dy()), r.orientation()));
+  return count(ExactIsoRect(to_exact(r.a()), to_exact(r.dx()), to_exact(r.dy()), r.orientation()));
 }
 
 }  // namespace t2

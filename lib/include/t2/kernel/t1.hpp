@@ -111,6 +111,10 @@ Sign compare(const BasicT1<T>& a, const BasicT1<T>& b) {
   return -orient(a, b);
 }
 
+/// The same point of T¹ with big-integer coordinates: both scaled by one positive power of two
+/// (as `to_exact` of a point), so nothing is rounded.
+ExactT1 to_exact(const T1& a);
+
 /// "[w, x]".
 std::string to_string(const T1& a);
 /// "[w, x]" with all digits.
