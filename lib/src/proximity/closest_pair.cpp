@@ -1,0 +1,40 @@
+// The closest pair of T², brute force and from the Delaunay edges (t2/proximity/closest_pair.hpp).
+#include "t2/proximity/closest_pair.hpp"
+
+#include <algorithm>
+
+#include "t2/kernel/error.hpp"
+#include "t2/proximity/pair_distance.hpp"
+#include "t2/proximity/sites.hpp"
+
+namespace t2 {
+
+using Index = Triangulation::Index;
+using Pair = std::pair<Index, Index>;
+
+Pair closest_pair_brute(std::span<const Point> P) {
+  if (P.size() < 2) throw BadInput("closest_pair: needs at least two sites");
+  Pair best{0, 1};
+  for (Index i = 0; i < P.size(); ++i)
+    for (Index j = i + 1; j < P.size(); ++j)  // pairs in lexicographic order: only a nearer one replaces
+      if (compare_pair_distance(P[i], P[j], P[best.first], P[best.second]) == NEGATIVE) best = {i, j};
+  return best;
+}
+
+//> closest-pair
+Pair closest_pair(std::span<const Point> P) {
+  if (P.size() < 2) throw BadInput("closest_pair: needs at least two sites");
+  const ProximitySites s = proximity_sites(P);
+  Pair best{Triangulation::none, Triangulation::none};
+  for (Index i = 0; i < P.size(); ++i)  // equal sites: the smallest pair (first, another)
+    if (s.kept[i] != i) best = std::min(best, Pair{s.kept[i], i});
+  if (best.first != Triangulation::none) return best;
+  for (const Pair& e : s.edges)  // finite: the Delaunay edges of each side
+    if (best.first == Triangulation::none || pair_before(P, e.first, e.second, best.first, best.second)) best = e;
+  if (best.first != Triangulation::none) return best;
+  if (!s.omega.empty()) return {0, P[0].w() == 0 ? 1 : s.omega.front()};  // +∞, all level
+  return {0, 1};  // one front site and one back site
+}
+//< closest-pair
+
+}  // namespace t2
