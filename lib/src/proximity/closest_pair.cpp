@@ -29,8 +29,19 @@ Pair closest_pair(std::span<const Point> P) {
   for (Index i = 0; i < P.size(); ++i)  // equal sites: the smallest pair (first, another)
     if (s.kept[i] != i) best = std::min(best, Pair{s.kept[i], i});
   if (best.first != Triangulation::none) return best;
-  for (const Pair& e : s.edges)  // finite: the Delaunay edges of each side
-    if (best.first == Triangulation::none || pair_before(P, e.first, e.second, best.first, best.second)) best = e;
+  // Finite: the Delaunay edges of each side; by their keys first, where every edge has one.
+  double least = -1;
+  for (const Pair& e : s.edges) {
+    const double k = finite_key(P[e.first], P[e.second]);
+    if (k < 0) {
+      least = -1;
+      break;
+    }
+    if (least < 0 || k < least) least = k;
+  }
+  for (const Pair& e : s.edges)  // only the keys near the least can be the nearest
+    if (least < 0 || keys_near(least, finite_key(P[e.first], P[e.second])))
+      if (best.first == Triangulation::none || pair_before(P, e.first, e.second, best.first, best.second)) best = e;
   if (best.first != Triangulation::none) return best;
   if (!s.omega.empty()) return {0, P[0].w() == 0 ? 1 : s.omega.front()};  // +∞, all level
   return {0, 1};  // one front site and one back site

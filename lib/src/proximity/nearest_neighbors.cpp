@@ -44,7 +44,7 @@ Index nearest_to_direction(std::span<const Point> P, const ProximitySites& s, In
     return bp != none && bp < bz ? bp : bz;
   }
   if (bf != none && bb != none)
-    throw Undefined("all_nearest_neighbors: the nearest sites to the site " + std::to_string(z) +
+    throw UndefinedNearest(z, "all_nearest_neighbors: the nearest sites to the site " + std::to_string(z) +
                     " on Omega are the front site " + std::to_string(bf) + " and the back site " + std::to_string(bb) +
                     ", which no distance of T2 orders (approaching Omega from either side gives opposite answers)");
   if (bf != none) return bf;

@@ -2,7 +2,6 @@
 #include "t2/proximity/spanning_tree.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "t2/kernel/distance.hpp"
 #include "t2/proximity/pair_distance.hpp"
@@ -15,46 +14,29 @@ namespace {
 using Index = Triangulation::Index;
 using Edge = std::pair<Index, Index>;
 
-/// Sorts the finite edges by `pair_before`. When every endpoint has |w| = 1, first by the double
-/// key fl(fl(dx)² + fl(dy)²): dx = fl(x_a − x_b) is within u of x_a − x_b relatively (one
-/// rounding, no underflow to zero for distinct doubles), so the key is within 4u(1 + u)
-/// relatively of |A − B|² unless a square under- or overflows (keys outside [2⁻⁹⁰⁰, 2⁹⁰⁰] send
-/// the whole sort to the exact comparison). Two keys further apart than 2⁻⁴⁰ relatively are
-/// then in the exact order; each run of keys closer than that is re-sorted exactly.
+/// Sorts the finite edges by `pair_before`: by `finite_key` when every edge has one, each run
+/// of near keys (`keys_near`) then re-sorted exactly; otherwise exactly throughout.
 void sort_finite(std::span<const Point> P, std::vector<Edge>& edges) {
   const auto exact = [&](const Edge& e, const Edge& f) { return pair_before(P, e.first, e.second, f.first, f.second); };
-  bool unit = true;
   struct Keyed {
     double key;
     Edge e;
   };
   std::vector<Keyed> k;
-  if (unit) {
-    k.reserve(edges.size());
-    for (const Edge& e : edges) {
-      const Point &a = P[e.first], &b = P[e.second];
-      if (std::fabs(a.w()) != 1 || std::fabs(b.w()) != 1) {
-        unit = false;
-        break;
-      }
-      const double dx = a.x() * a.w() - b.x() * b.w(), dy = a.y() * a.w() - b.y() * b.w();  // w = ±1: exact
-      const double key = dx * dx + dy * dy;
-      if (!(key >= 0x1p-900 && key <= 0x1p900)) {
-        unit = false;
-        break;
-      }
-      k.push_back({key, e});
+  k.reserve(edges.size());
+  for (const Edge& e : edges) {
+    const double key = finite_key(P[e.first], P[e.second]);
+    if (key < 0) {
+      std::sort(edges.begin(), edges.end(), exact);
+      return;
     }
-  }
-  if (!unit) {
-    std::sort(edges.begin(), edges.end(), exact);
-    return;
+    k.push_back({key, e});
   }
   std::sort(k.begin(), k.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key || (a.key == b.key && a.e < b.e); });
   for (std::size_t m = 0; m < k.size(); ++m) edges[m] = k[m].e;
   for (std::size_t first = 0; first < k.size();) {
     std::size_t last = first + 1;
-    while (last < k.size() && k[last].key - k[last - 1].key <= 0x1p-40 * k[last].key) ++last;
+    while (last < k.size() && keys_near(k[last - 1].key, k[last].key)) ++last;
     if (last - first > 1) std::sort(edges.begin() + first, edges.begin() + last, exact);
     first = last;
   }

@@ -27,15 +27,26 @@
 /// Ω scans the sites of Ω and the hull vertices of both sides: O(n log n + k(k + h)).
 
 #include <span>
+#include <string>
 #include <vector>
 
+#include "t2/kernel/error.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
 
+/// The `Undefined` of `all_nearest_neighbors`, naming the site on Ω whose nearest is undefined.
+class UndefinedNearest : public Undefined {
+ public:
+  /// @param site the site on Ω; @param rule what the message says
+  UndefinedNearest(Triangulation::Index site, const std::string& rule) : Undefined(rule), site(site) {}
+  Triangulation::Index site;  ///< the input index of that site
+};
+
 /// nearest[i]: the nearest site to site i other than i itself (see the file comment). Throws
-/// `BadInput` for fewer than two sites, `Undefined` where the file comment says.
+/// `BadInput` for fewer than two sites, `UndefinedNearest` where the file comment
+/// says.
 std::vector<Triangulation::Index> all_nearest_neighbors(std::span<const Point> points);
 
 }  // namespace t2

@@ -64,4 +64,21 @@ inline bool pair_before(std::span<const Point> P, std::uint32_t i, std::uint32_t
   return a < b;
 }
 
+/// A double key of the squared length of a finite pair (a, b proper on one side), for sorting
+/// before the exact order decides: when |a_w| = |b_w| = 1, dx = fl(x_a w_a − x_b w_b) is the
+/// Cartesian difference rounded once (the products by ±1 are exact, and a difference of
+/// distinct doubles never rounds to zero), so the key fl(fl(dx²) + fl(dy²)) is within
+/// 4u(1 + u) of |A − B|² relatively, u = 2⁻⁵³ — unless a square under- or overflows. So
+/// two keys k₁ ≤ k₂ with k₂ − k₁ > 2⁻⁴⁰·k₂ are in the exact order. Returns −1 where that bound
+/// does not hold (|w| ≠ 1, or a key outside [2⁻⁹⁰⁰, 2⁹⁰⁰]): the caller then compares exactly.
+inline double finite_key(const Point& a, const Point& b) {
+  if (!((a.w() == 1 || a.w() == -1) && (b.w() == 1 || b.w() == -1))) return -1;
+  const double dx = a.x() * a.w() - b.x() * b.w(), dy = a.y() * a.w() - b.y() * b.w();
+  const double key = dx * dx + dy * dy;
+  return key >= 0x1p-900 && key <= 0x1p900 ? key : -1;
+}
+
+/// Two keys of `finite_key` too close for their order to be trusted (k₁ ≤ k₂).
+inline bool keys_near(double k1, double k2) { return k2 - k1 <= 0x1p-40 * k2; }
+
 }  // namespace t2
