@@ -2,6 +2,7 @@
 #include "t2/proximity/closest_pair.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "t2/kernel/error.hpp"
 #include "t2/proximity/pair_distance.hpp"
@@ -29,19 +30,23 @@ Pair closest_pair(std::span<const Point> P) {
   for (Index i = 0; i < P.size(); ++i)  // equal sites: the smallest pair (first, another)
     if (s.kept[i] != i) best = std::min(best, Pair{s.kept[i], i});
   if (best.first != Triangulation::none) return best;
-  // Finite: the Delaunay edges of each side; by their keys first, where every edge has one.
+  // Finite: the Delaunay edges of each side; by their keys first (one pass over the points),
+  // where every edge has one; only the keys near the least can be the nearest.
+  std::vector<double> keys(s.edges.size());
   double least = -1;
-  for (const Pair& e : s.edges) {
-    const double k = finite_key(P[e.first], P[e.second]);
-    if (k < 0) {
+  for (std::size_t m = 0; m < s.edges.size(); ++m) {
+    keys[m] = finite_key(P[s.edges[m].first], P[s.edges[m].second]);
+    if (keys[m] < 0) {
       least = -1;
       break;
     }
-    if (least < 0 || k < least) least = k;
+    if (least < 0 || keys[m] < least) least = keys[m];
   }
-  for (const Pair& e : s.edges)  // only the keys near the least can be the nearest
-    if (least < 0 || keys_near(least, finite_key(P[e.first], P[e.second])))
+  for (std::size_t m = 0; m < s.edges.size(); ++m) {
+    const Pair& e = s.edges[m];
+    if (least < 0 || keys_near(least, keys[m]))
       if (best.first == Triangulation::none || pair_before(P, e.first, e.second, best.first, best.second)) best = e;
+  }
   if (best.first != Triangulation::none) return best;
   if (!s.omega.empty()) return {0, P[0].w() == 0 ? 1 : s.omega.front()};  // +∞, all level
   return {0, 1};  // one front site and one back site

@@ -2,11 +2,13 @@
 #include "t2/proximity/spanning_tree.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "t2/kernel/distance.hpp"
 #include "t2/proximity/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
 #include "t2/proximity/union_find.hpp"
+#include "t2/triangulation/spatial_sort.hpp"
 
 namespace t2 {
 namespace {
@@ -18,25 +20,26 @@ using Edge = std::pair<Index, Index>;
 /// of near keys (`keys_near`) then re-sorted exactly; otherwise exactly throughout.
 void sort_finite(std::span<const Point> P, std::vector<Edge>& edges) {
   const auto exact = [&](const Edge& e, const Edge& f) { return pair_before(P, e.first, e.second, f.first, f.second); };
-  struct Keyed {
-    double key;
-    Edge e;
-  };
-  std::vector<Keyed> k;
-  k.reserve(edges.size());
-  for (const Edge& e : edges) {
-    const double key = finite_key(P[e.first], P[e.second]);
+  // Positive doubles sort as their bit patterns: a radix sort of (key, edge) pairs.
+  std::vector<detail::SortKey> k(edges.size());
+  for (std::size_t m = 0; m < edges.size(); ++m) {
+    const double key = finite_key(P[edges[m].first], P[edges[m].second]);
     if (key < 0) {
       std::sort(edges.begin(), edges.end(), exact);
       return;
     }
-    k.push_back({key, e});
+    k[m] = {std::bit_cast<std::uint64_t>(key), static_cast<std::uint32_t>(m)};
   }
-  std::sort(k.begin(), k.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key || (a.key == b.key && a.e < b.e); });
-  for (std::size_t m = 0; m < k.size(); ++m) edges[m] = k[m].e;
+  detail::radix_sort(k, 64);
+  {
+    std::vector<Edge> sorted(edges.size());
+    for (std::size_t m = 0; m < k.size(); ++m) sorted[m] = edges[k[m].index];
+    edges.swap(sorted);
+  }
+  const auto key = [&](std::size_t m) { return std::bit_cast<double>(k[m].key); };
   for (std::size_t first = 0; first < k.size();) {
     std::size_t last = first + 1;
-    while (last < k.size() && keys_near(k[last - 1].key, k[last].key)) ++last;
+    while (last < k.size() && keys_near(key(last - 1), key(last))) ++last;
     if (last - first > 1) std::sort(edges.begin() + first, edges.begin() + last, exact);
     first = last;
   }
@@ -95,8 +98,10 @@ std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
     if (uf.join(e.first, e.second)) tree.push_back(e);
   // Finite: Kruskal on the Delaunay edges of each side.
   sort_finite(P, s.edges);
-  for (const Edge& e : s.edges)
+  for (const Edge& e : s.edges) {
     if (uf.join(e.first, e.second)) tree.push_back(e);
+    if (uf.sets() == 1) break;
+  }
   // +∞: the sites on Ω.
   if (!s.omega.empty()) join_infinite(P, uf, tree);
   // Beyond infinity: the nearest pair across the sides, between hull vertices (sites.hpp, 2).
