@@ -1,11 +1,13 @@
 // Algorithm 14 in T² (t2/proximity/nearest_neighbors.hpp).
 #include "t2/proximity/nearest_neighbors.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "t2/kernel/distance.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/filter.hpp"
+#include "t2/proximity/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
 
 namespace t2 {
@@ -68,10 +70,32 @@ std::vector<Index> all_nearest_neighbors(std::span<const Point> P) {
   }
   std::vector<char> equal(P.size(), 0);
   for (Index i = 0; i < P.size(); ++i) equal[i] = nearest[i] != none;
-  // Algorithm 14: the Delaunay neighbours on each side, every edge offered to both ends.
-  for (auto [a, b] : s.edges) {
-    if (!equal[a]) nearest[a] = nearer(P, a, nearest[a], b);
-    if (!equal[b]) nearest[b] = nearer(P, b, nearest[b], a);
+  // Algorithm 14: the Delaunay neighbours on each side, every edge offered to both ends —
+  // by the edges' keys (pair_distance.hpp) where every edge has one, the exact order deciding
+  // between near keys; otherwise exactly.
+  std::vector<double> key(s.edges.size());
+  bool keyed = true;
+  for (std::size_t m = 0; m < s.edges.size() && keyed; ++m) {
+    key[m] = finite_key(P[s.edges[m].first], P[s.edges[m].second]);
+    keyed = key[m] >= 0;
+  }
+  std::vector<double> best_key(keyed ? P.size() : 0);
+  const auto offer = [&](Index v, Index u, double k) {
+    if (equal[v]) return;
+    if (!keyed) {
+      nearest[v] = nearer(P, v, nearest[v], u);
+      return;
+    }
+    if (nearest[v] == none || (k < best_key[v] && !keys_near(k, best_key[v]))) {
+      nearest[v] = u, best_key[v] = k;
+    } else if (keys_near(std::min(k, best_key[v]), std::max(k, best_key[v]))) {
+      const Index w = nearer(P, v, nearest[v], u);
+      if (w != nearest[v]) nearest[v] = w, best_key[v] = k;
+    }
+  };
+  for (std::size_t m = 0; m < s.edges.size(); ++m) {
+    offer(s.edges[m].first, s.edges[m].second, key[m]);
+    offer(s.edges[m].second, s.edges[m].first, key[m]);
   }
   // Sites without a neighbour on their side, and the sites of Ω.
   for (Index i = 0; i < P.size(); ++i) {
