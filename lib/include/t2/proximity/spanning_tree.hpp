@@ -32,8 +32,8 @@
 /// So the tree is built from the two planar triangulations, the pairs at +∞ by their indices and
 /// the beyond-infinity pair from the hull vertices.
 ///
-/// **Cost.** The triangulations, O(n log n); the finite edges sorted by their double length with
-/// the exact order settling near ties (spanning_tree.cpp); the pairs at +∞ in O(n·k) for k
+/// **Cost.** The triangulations, O(n log n); the finite edges radix-sorted by their double keys
+/// (pair_distance.hpp), the exact order settling near ties (spanning_tree.cpp); the pairs at +∞ in O(n·k) for k
 /// sites on Ω, in practice a few steps; the beyond-infinity pair over the hull vertices of the
 /// two sides, O(h_F·h_B) (a calipers walk would be linear: not done).
 
