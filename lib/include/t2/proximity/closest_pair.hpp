@@ -1,0 +1,33 @@
+#pragma once
+/// @file closest_pair.hpp
+/// @brief The closest pair of sites of T² (seed 003 §4.3.2), two ways that give the same
+/// answer: brute force over all pairs, and the Delaunay edges of each side.
+///
+/// **The answer.** The first pair (i, j), i < j, in the order of `pair_before`
+/// (pair_distance.hpp): the nearest by the T² distance of pairs, and among equally near pairs
+/// the smallest (i, j) lexicographically. So two equal sites, when there are any, are the
+/// answer (distance 0); then the nearest pair on one side (finite); then a pair with a site on
+/// Ω (+∞, all level: the smallest indices); last a front site and a back one (beyond infinity,
+/// the pair farthest apart in the drawing). Never undefined.
+///
+/// **Why the Delaunay edges suffice.** Without equal sites, a closest pair on one side has no
+/// third site nearer to both of its ends, so it is a Delaunay edge of its side with every pair
+/// that ties with it (sites.hpp, 1); when no side has two sites, a pair at +∞ is the answer if
+/// a site is on Ω, and otherwise the two sites are the only pair.
+
+#include <span>
+#include <utility>
+
+#include "t2/kernel/point.hpp"
+#include "t2/triangulation/triangulation.hpp"
+
+namespace t2 {
+
+/// The closest pair by brute force: O(n²) comparisons. Throws `BadInput` for fewer than two sites.
+std::pair<Triangulation::Index, Triangulation::Index> closest_pair_brute(std::span<const Point> points);
+
+/// The closest pair from the Delaunay edges of each side (file comment): O(n log n). The same
+/// answer as `closest_pair_brute`. Throws `BadInput` for fewer than two sites.
+std::pair<Triangulation::Index, Triangulation::Index> closest_pair(std::span<const Point> points);
+
+}  // namespace t2

@@ -1,0 +1,121 @@
+// Algorithm 12 in T² (t2/proximity/spanning_tree.hpp).
+#include "t2/proximity/spanning_tree.hpp"
+
+#include <algorithm>
+#include <bit>
+
+#include "t2/kernel/distance.hpp"
+#include "t2/proximity/pair_distance.hpp"
+#include "t2/proximity/sites.hpp"
+#include "t2/proximity/union_find.hpp"
+#include "t2/triangulation/spatial_sort.hpp"
+
+namespace t2 {
+namespace {
+
+using Index = Triangulation::Index;
+using Edge = std::pair<Index, Index>;
+
+/// Sorts the finite edges by `pair_before`: by `finite_key` when every edge has one, each run
+/// of near keys (`keys_near`) then re-sorted exactly; otherwise exactly throughout.
+void sort_finite(std::span<const Point> P, std::vector<Edge>& edges) {
+  const auto exact = [&](const Edge& e, const Edge& f) { return pair_before(P, e.first, e.second, f.first, f.second); };
+  // Positive doubles sort as their bit patterns: a radix sort of (key, edge) pairs.
+  std::vector<detail::SortKey> k(edges.size());
+  for (std::size_t m = 0; m < edges.size(); ++m) {
+    const double key = finite_key(P[edges[m].first], P[edges[m].second]);
+    if (key < 0) {
+      std::sort(edges.begin(), edges.end(), exact);
+      return;
+    }
+    k[m] = {std::bit_cast<std::uint64_t>(key), static_cast<std::uint32_t>(m)};
+  }
+  detail::radix_sort(k, 64);
+  {
+    std::vector<Edge> sorted(edges.size());
+    for (std::size_t m = 0; m < k.size(); ++m) sorted[m] = edges[k[m].index];
+    edges.swap(sorted);
+  }
+  const auto key = [&](std::size_t m) { return std::bit_cast<double>(k[m].key); };
+  for (std::size_t first = 0; first < k.size();) {
+    std::size_t last = first + 1;
+    while (last < k.size() && keys_near(key(last - 1), key(last))) ++last;
+    if (last - first > 1) std::sort(edges.begin() + first, edges.begin() + last, exact);
+    first = last;
+  }
+}
+
+/// Kruskal's pairs at +∞ (at least one site on Ω), all of one weight, in the order of their
+/// indices: for each i ascending, the first site j > i of every other component that makes an
+/// eligible pair with i (j on Ω when i is proper); their joins in the order of j.
+void join_infinite(std::span<const Point> P, UnionFind& uf, std::vector<Edge>& tree) {
+  struct Group {
+    std::vector<Index> members;  // ascending
+    bool omega;
+  };
+  std::vector<Group> groups;  // the components now: one per side with sites, one per site of Ω
+  std::vector<Index> root_group(P.size(), Triangulation::none);
+  for (Index i = 0; i < P.size(); ++i) {
+    const Index r = uf.find(i);
+    if (root_group[r] == Triangulation::none) {
+      root_group[r] = static_cast<Index>(groups.size());
+      groups.push_back({{}, P[i].w() == 0});
+    }
+    groups[root_group[r]].members.push_back(i);
+  }
+  std::vector<std::pair<Index, Index>> offers;  // (j, current root)
+  for (Index i = 0; i < P.size() && uf.sets() > 1; ++i) {
+    const bool i_omega = P[i].w() == 0;
+    const Index ri = uf.find(i);
+    offers.clear();
+    for (const Group& g : groups) {
+      if (!(i_omega || g.omega)) continue;
+      const auto it = std::upper_bound(g.members.begin(), g.members.end(), i);
+      if (it == g.members.end()) continue;
+      const Index r = uf.find(*it);
+      if (r != ri) offers.emplace_back(*it, r);
+    }
+    std::sort(offers.begin(), offers.end());
+    for (auto [j, r] : offers)
+      if (uf.join(i, j)) tree.emplace_back(i, j);
+  }
+}
+
+}  // namespace
+
+//> minimum-spanning-tree
+std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
+  std::vector<Edge> tree;
+  if (P.size() < 2) return tree;
+  ProximitySites s = proximity_sites(P);
+  UnionFind uf(P.size());
+  // Weight 0: each equal site joins the first of them, in the order of the pairs (kept, i).
+  std::vector<Edge> equal;
+  for (Index i = 0; i < P.size(); ++i)
+    if (s.kept[i] != i) equal.emplace_back(s.kept[i], i);
+  std::sort(equal.begin(), equal.end());
+  for (const Edge& e : equal)
+    if (uf.join(e.first, e.second)) tree.push_back(e);
+  // Finite: Kruskal on the Delaunay edges of each side.
+  sort_finite(P, s.edges);
+  for (const Edge& e : s.edges) {
+    if (uf.join(e.first, e.second)) tree.push_back(e);
+    if (uf.sets() == 1) break;
+  }
+  // +∞: the sites on Ω.
+  if (!s.omega.empty()) join_infinite(P, uf, tree);
+  // Beyond infinity: the nearest pair across the sides, between hull vertices (sites.hpp, 2).
+  if (uf.sets() > 1) {
+    Edge best{Triangulation::none, Triangulation::none};
+    for (Index a : s.front_extremes)
+      for (Index b : s.back_extremes)
+        if (best.first == Triangulation::none || pair_before(P, std::min(a, b), std::max(a, b), best.first, best.second))
+          best = {std::min(a, b), std::max(a, b)};
+    uf.join(best.first, best.second);
+    tree.push_back(best);
+  }
+  return tree;
+}
+//< minimum-spanning-tree
+
+}  // namespace t2
