@@ -159,9 +159,20 @@ JoinMeet<T> join_meet(const BasicPoint<T>& a, const BasicPoint<T>& b, const Basi
   return {&a, &b, &c, &d, w};
 }
 
-/// The point constructed exactly (GMP integers): meet(join(a, b), join(c, d)) of line.hpp.
+namespace detail {
+/// (a ∨ b) ∧ (c ∨ d) for points with w = 1, exactly, with GMP integers reused from call to call
+/// (join_meet.cpp): the point of meet(join(a, b), join(c, d)) times a positive factor.
+ExactPoint exact_join_meet_cartesian(const Point& a, const Point& b, const Point& c, const Point& d);
+}  // namespace detail
+
+/// The point constructed exactly (GMP integers): meet(join(a, b), join(c, d)) of line.hpp, up
+/// to a positive factor.
 template <class T>
 BasicPoint<Integer> to_exact(const JoinMeet<T>& m) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (m.a->w() == 1 && m.b->w() == 1 && m.c->w() == 1 && m.d->w() == 1)
+      return detail::exact_join_meet_cartesian(*m.a, *m.b, *m.c, *m.d);
+  }
   const auto exact = [](const BasicPoint<T>& p) {
     if constexpr (std::is_same_v<T, double>) return to_exact(p);
     else return p;
