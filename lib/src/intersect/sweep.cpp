@@ -92,7 +92,6 @@ class Sweep {
               std::vector<IntersectionPoint>& out);
   void check(std::size_t a, std::size_t b);
 
-  const std::vector<Segment>& input_;
   std::vector<Piece> pieces_;
   std::vector<Group> groups_;          // the endpoint events, sorted
   std::vector<std::uint32_t> starts_;  // the segments starting at each group
@@ -106,7 +105,7 @@ class Sweep {
 };
 
 Sweep::Sweep(const std::vector<Segment>& segments)
-    : input_(segments), status_(StatusLess{this}), where_(segments.size()) {
+    : status_(StatusLess{this}), where_(segments.size()) {
   if (segments.size() >= (std::size_t{1} << 31)) throw std::length_error("sweep: too many segments");
   pieces_.resize(segments.size());
   struct End {
@@ -195,7 +194,12 @@ bool Sweep::below(std::size_t a, std::size_t b) const {
 void Sweep::check(std::size_t a, std::size_t b) {
   const Sign w = turn(pieces_[a].left, pieces_[a].right, pieces_[b].left, pieces_[b].right);
   if (w == ZERO) return;  // parallel or collinear: overlaps are found at their endpoints
-  if (!intersects(input_[a], input_[b])) return;
+  {  // segment.hpp's `intersects` without its degenerate cases: neither is a point (points never
+     // enter the status) and their lines differ (w ≠ 0)
+    const Point &pa = pieces_[a].left, &pb = pieces_[a].right, &qa = pieces_[b].left, &qb = pieces_[b].right;
+    const int s1 = orient(pa, pb, qa), s2 = orient(pa, pb, qb), s3 = orient(qa, qb, pa), s4 = orient(qa, qb, pb);
+    if (!((s3 >= 0 && s4 <= 0 && s1 <= 0 && s2 >= 0) || (s3 <= 0 && s4 >= 0 && s1 >= 0 && s2 <= 0))) return;
+  }
   if (w == NEGATIVE) std::swap(a, b);  // the front one of the two meets: turn(a, b) > 0
   const Piece &p = pieces_[a], &q = pieces_[b];
   Event e;
