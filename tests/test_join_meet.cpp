@@ -147,6 +147,15 @@ TEST(JoinMeet, ExactlyConcurrentJoinsGiveZero) {
     if (x.w == NEGATIVE) x = join_meet(s[2], s[3], s[0], s[1]);
     if (y.w == NEGATIVE) y = join_meet(s[6], s[7], s[4], s[5]);
     zeros += compare_xy(x, y) == ZERO && compare_xy(x, Point(1, 3, 5)) == ZERO && orient(p, q, y) == ZERO;
+    // The same on Integer points, scaled far beyond 52 bits (JoinMeet<Integer>).
+    const Integer big = Integer(1) << 90;
+    const auto exact = [&](const Point& r) {
+      const ExactPoint e = to_exact(r);
+      return ExactPoint(Integer(e.w() * big), Integer(e.x() * big), Integer(e.y() * big));
+    };
+    std::array<ExactPoint, 8> e{exact(s[0]), exact(s[1]), exact(s[2]), exact(s[3]),
+                                exact(s[4]), exact(s[5]), exact(s[6]), exact(s[7])};
+    EXPECT_TRUE(check_all(e, exact(p), exact(q)));
   }
   EXPECT_EQ(zeros, tested);
   EXPECT_GT(tested, 1500 * testing::scale());
