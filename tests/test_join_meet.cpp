@@ -147,7 +147,9 @@ TEST(JoinMeet, ExactlyConcurrentJoinsGiveZero) {
     if (x.w == NEGATIVE) x = join_meet(s[2], s[3], s[0], s[1]);
     if (y.w == NEGATIVE) y = join_meet(s[6], s[7], s[4], s[5]);
     zeros += compare_xy(x, y) == ZERO && compare_xy(x, Point(1, 3, 5)) == ZERO && orient(p, q, y) == ZERO;
-    // The same on Integer points, scaled far beyond 52 bits (JoinMeet<Integer>).
+    // The same on Integer points, scaled far beyond 52 bits (JoinMeet<Integer>), one case in
+    // ten (GMP all the way).
+    if (i % 10 != 0) continue;
     const Integer big = Integer(1) << 90;
     const auto exact = [&](const Point& r) {
       const ExactPoint e = to_exact(r);
