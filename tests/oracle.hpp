@@ -20,6 +20,22 @@ inline Rational q(const Integer& v) { return Rational(v); }
 /// The sign of a rational.
 inline Sign sign_oracle(const Rational& v) { return static_cast<Sign>(sgn(v)); }
 
+/// The sign of a − b.
+inline Sign compare_oracle(const Rational& a, const Rational& b) { return static_cast<Sign>((a > b) - (a < b)); }
+
+/// The normalized (x, y) of a homogeneous triple: divided by |w|, or by max(|x|, |y|) on Ω
+/// (lexicographic.hpp).
+inline std::array<Rational, 2> normal_xy(const std::array<Rational, 3>& p) {
+  const Rational s = p[0] != 0 ? Rational(abs(p[0])) : std::max(Rational(abs(p[1])), Rational(abs(p[2])));
+  return {Rational(p[1] / s), Rational(p[2] / s)};
+}
+
+/// The xy order of lexicographic.hpp on two homogeneous triples (normalized x, then y).
+inline Sign xy_oracle(const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
+  const auto a = normal_xy(p), b = normal_xy(q);
+  return a[0] != b[0] ? compare_oracle(a[0], b[0]) : compare_oracle(a[1], b[1]);
+}
+
 /// The exact homogeneous triple of a point of either type.
 template <class P>
 std::array<Rational, 3> triple(const P& p) {

@@ -52,16 +52,6 @@ R3 meet_oracle(const L& l, const L& m) {
   return {Rational(a[1] * b[2] - a[2] * b[1]), Rational(a[2] * b[0] - a[0] * b[2]),
           Rational(a[0] * b[1] - a[1] * b[0])};
 }
-/// Normalized (x, y): divided by |w|, or by max(|x|, |y|) on Ω (lexicographic.hpp).
-std::array<Rational, 2> normal(const R3& p) {
-  const Rational s = p[0] != 0 ? Rational(abs(p[0])) : std::max(Rational(abs(p[1])), Rational(abs(p[2])));
-  return {Rational(p[1] / s), Rational(p[2] / s)};
-}
-Sign cmp(const Rational& a, const Rational& b) { return static_cast<Sign>((a > b) - (a < b)); }
-Sign xy_oracle(const R3& p, const R3& q) {
-  const auto a = normal(p), b = normal(q);
-  return a[0] != b[0] ? cmp(a[0], b[0]) : cmp(a[1], b[1]);
-}
 template <class P>
 R3 point_triple(const P& p) {
   return {testing::q(p.w()), testing::q(p.x()), testing::q(p.y())};
@@ -74,11 +64,11 @@ void check_all(const BasicLine<T>& a, const BasicLine<T>& b, const BasicLine<T>&
                const BasicPoint<T>& p, const BasicPoint<T>& q) {
   const MeetPoint<T> m1{a, b}, m2{c, d};
   const R3 o1 = meet_oracle(a, b), o2 = meet_oracle(c, d);
-  ASSERT_EQ(compare_xy(m1, m2), xy_oracle(o1, o2));
-  ASSERT_EQ(compare_x(m1, m2), cmp(normal(o1)[0], normal(o2)[0]));
-  ASSERT_EQ(compare_xy(m1, p), xy_oracle(o1, point_triple(p)));
-  ASSERT_EQ(compare_xy(p, m1), xy_oracle(point_triple(p), o1));
-  ASSERT_EQ(compare_y(m2, q), cmp(normal(o2)[1], normal(point_triple(q))[1]));
+  ASSERT_EQ(compare_xy(m1, m2), testing::xy_oracle(o1, o2));
+  ASSERT_EQ(compare_x(m1, m2), testing::compare_oracle(testing::normal_xy(o1)[0], testing::normal_xy(o2)[0]));
+  ASSERT_EQ(compare_xy(m1, p), testing::xy_oracle(o1, point_triple(p)));
+  ASSERT_EQ(compare_xy(p, m1), testing::xy_oracle(point_triple(p), o1));
+  ASSERT_EQ(compare_y(m2, q), testing::compare_oracle(testing::normal_xy(o2)[1], testing::normal_xy(point_triple(q))[1]));
   ASSERT_EQ(side(c, m1), dot_sign(coefficients(c), o1));
   // Δ(p, q, m) = (p × q)·m.
   const R3 pp = point_triple(p), qq = point_triple(q);

@@ -1,58 +1,64 @@
 // Bentley–Ottmann on front segments (chapter 13), with exact events and an exact status order.
 //
 // Events are the points of the queue, in the xy order of lexicographic.hpp: the input endpoints
-// (exact integer points) and the meets of two segments' lines, kept as the pair of lines
-// (t2/kernel/meet_point.hpp): compared without being constructed. Equal events are one event,
-// whatever their form. The status is a std::set of segment indices ordered at the current event
-// E. Its invariant, between two events, is: the segments of the status are the segments that
-// meet the sweep line x = E.x at or after E (ordered lexicographically, a vertical segment is
-// met where its points lie), sorted bottom to top by where they meet it; segments through one
-// point of that line are sorted by their order just right of it (by slope), a vertical one last,
-// and collinear ones by index. The invariant holds because every point where two segments swap
-// is an event (the classic lemma: two segments are adjacent in the status just before their
-// leftmost common point), and at each event every segment through it is taken out and put back.
+// and the crossings of two segments' lines, each kept as its four input points (join_meet.hpp):
+// compared without being constructed. Every predicate is a filtered polynomial in the input
+// doubles (orient.hpp, lexicographic.hpp, join_meet.hpp), exact for every finite double; the
+// exact integer point is constructed only for a reported point. The endpoints are sorted once
+// and grouped (equal points are one event); the crossings wait in a binary heap, where the same
+// point may wait several times: every copy is taken out with the first, and an endpoint event
+// takes the crossings equal to it. The status is a std::set of segment indices ordered at the
+// current event E. Its invariant, between two events, is: the segments of the status are the
+// segments that meet the sweep line x = E.x at or after E (ordered lexicographically, a vertical
+// segment is met where its points lie), sorted bottom to top by where they meet it; segments
+// through one point of that line are sorted by their order just right of it (by slope), a
+// vertical one last, and collinear ones by index. The invariant holds because every point where
+// two segments swap is an event (the classic lemma: two segments are adjacent in the status just
+// before their leftmost common point), and at each event every segment through it is taken out
+// and put back.
 //
 // The comparator therefore only ever has to order a segment through E against another one: a
-// segment not through E is below or above E (`side` of E on its line), two segments through E
-// compare by the sign of w of the meet of their lines (meet.hpp: of the two common points of the
-// lines, the one for which they turn counter-clockwise — front, i.e. the first line is below the
-// second right of E, exactly when w > 0). std::set only compares the key being inserted with
-// the elements, and every key inserted at E goes through E; elements are erased by iterator.
+// segment not through E is below or above E (the orientation of E with the segment's ends), two
+// segments through E compare by the sign of w of the meet of their lines (join_meet.hpp's
+// `turn`: of the two common points of the lines, the one for which they turn counter-clockwise
+// — front, i.e. the first line is below the second right of E, exactly when w > 0). std::set
+// only compares the key being inserted with the elements, and every key inserted at E goes
+// through E; elements are erased by iterator.
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
+#include <cstdint>
 #include <set>
 #include <stdexcept>
-#include <type_traits>
-#include <variant>
 
 #include "t2/intersect/intersections.hpp"
+#include "t2/kernel/join_meet.hpp"
 #include "t2/kernel/lexicographic.hpp"
-#include "t2/kernel/line.hpp"
-#include "t2/kernel/meet_point.hpp"
+#include "t2/kernel/orient.hpp"
 
 namespace t2 {
 namespace {
 
-using Meet = MeetPoint<Integer>;
-using Event = std::variant<ExactPoint, Meet>;
-
-/// compare_xy of two events of either form (meet_point.hpp, lexicographic.hpp).
-Sign compare_events(const Event& a, const Event& b) {
-  return std::visit([](const auto& p, const auto& q) { return compare_xy(p, q); }, a, b);
-}
-
-struct EventLess {
-  bool operator()(const Event& a, const Event& b) const { return compare_events(a, b) == NEGATIVE; }
+/// A front segment from its lower-left end to its upper-right end (the xy order), in doubles.
+struct Piece {
+  Point left{1, 0, 0}, right{1, 0, 0};
+  bool vertical = false;  ///< left and right have the same x
+  bool point = false;     ///< zero length: never in the status
 };
 
-/// A front segment from its lower-left end to its upper-right end (the xy order).
-struct Piece {
-  ExactPoint left{1, 0, 0}, right{1, 0, 0};
-  ExactLine line{1, 0, 0};  ///< left ∨ right: positive side above (left for a vertical one)
-  bool vertical = false;
-  bool point = false;  ///< zero length: never in the status
+/// An event: an endpoint p of segment i (a point of `pieces_`) or the crossing m of segments
+/// i < j.
+struct Event {
+  const Point* p = nullptr;  ///< the endpoint, or null for a crossing
+  JoinMeet<double> m{};      ///< the crossing (front: m.w is POSITIVE)
+  std::uint32_t i = 0, j = 0;
+};
+
+/// Endpoint events with equal points are one group: its point and the segments starting there.
+struct Group {
+  const Point* p;
+  std::uint32_t segment;     ///< p is an end of this segment
+  std::uint32_t begin, end;  ///< the range of `starts_`
 };
 
 /// The lookup key for "where the current event is" in the status (std::set's transparent search).
@@ -72,22 +78,43 @@ class Sweep {
     bool operator()(Probe, std::size_t b) const { return s->side_of_event(b) == NEGATIVE; }
   };
   using Status = std::set<std::size_t, StatusLess>;
+  /// The heap order: the least event on top.
+  struct Later {
+    const Sweep* s;
+    bool operator()(const Event& a, const Event& b) const { return s->compare_events(a, b) == POSITIVE; }
+  };
 
+  Sign compare_events(const Event& a, const Event& b) const;
+  bool on_vertical(const Event& a, const Event& b) const;
   Sign side_of_event(std::size_t i) const;
   bool below(std::size_t a, std::size_t b) const;
-  void handle(const Event& e, std::vector<std::size_t>& upper, std::vector<IntersectionPoint>& out);
+  void handle(const Event& e, const std::uint32_t* upper_begin, const std::uint32_t* upper_end,
+              std::vector<IntersectionPoint>& out);
   void check(std::size_t a, std::size_t b);
 
   std::vector<Piece> pieces_;
-  std::map<Event, std::vector<std::size_t>, EventLess> queue_;  // event -> segments starting there
+  std::vector<Group> groups_;          // the endpoint events, sorted
+  std::vector<std::uint32_t> starts_;  // the segments starting at each group
+  std::vector<Event> heap_;            // the crossings still ahead (std::push_heap, Later)
   Event current_;
   Status status_;
   std::vector<Status::iterator> where_;
+  std::vector<std::size_t> lower_, inner_;  // reused by handle
+  std::vector<Status::node_type> moved_;    // the nodes of inner_, out of the status
+  std::vector<std::size_t> order_;          // the segments put back at the event
 };
 
 Sweep::Sweep(const std::vector<Segment>& segments)
-    : current_(ExactPoint(1, 0, 0)), status_(StatusLess{this}), where_(segments.size()) {
-  pieces_.reserve(segments.size());
+    : status_(StatusLess{this}), where_(segments.size()) {
+  if (segments.size() >= (std::size_t{1} << 31)) throw std::length_error("sweep: too many segments");
+  pieces_.resize(segments.size());
+  struct End {
+    const Point* p;
+    std::uint32_t segment;
+    bool starts;
+  };
+  std::vector<End> ends;
+  ends.reserve(2 * segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const Segment& s = segments[i];
     if (!(s.source().w() > 0 && s.target().w() > 0))
@@ -95,29 +122,60 @@ Sweep::Sweep(const std::vector<Segment>& segments)
           "segment {} ({}): the sweep takes front segments only (both endpoints with w > 0); the brute force "
           "takes every segment of T2",
           i, to_string(s)));
-    Piece p;
-    p.left = to_exact(s.source());
-    p.right = to_exact(s.target());
+    Piece& p = pieces_[i];
+    p.left = s.source();
+    p.right = s.target();
     const Sign c = compare_xy(p.left, p.right);
     if (c == POSITIVE) std::swap(p.left, p.right);
     p.point = c == ZERO;
-    if (!p.point) {
-      p.line = join(p.left, p.right);
-      p.vertical = p.line.Y() == 0;  // <W, X, 0>: x is constant
-    }
-    queue_[Event(p.left)].push_back(i);
-    if (!p.point) queue_.try_emplace(Event(p.right));
-    pieces_.push_back(std::move(p));
+    p.vertical = !p.point && compare_x(p.left, p.right) == ZERO;
+    ends.push_back({&p.left, static_cast<std::uint32_t>(i), true});
+    if (!p.point) ends.push_back({&p.right, static_cast<std::uint32_t>(i), false});
   }
+  std::sort(ends.begin(), ends.end(), [](const End& a, const End& b) { return compare_xy(*a.p, *b.p) == NEGATIVE; });
+  starts_.reserve(segments.size());
+  for (std::size_t k = 0; k < ends.size();) {
+    Group g{ends[k].p, ends[k].segment, static_cast<std::uint32_t>(starts_.size()), 0};
+    for (; k < ends.size() && compare_xy(*ends[k].p, *g.p) == ZERO; ++k)
+      if (ends[k].starts) starts_.push_back(ends[k].segment);
+    g.end = static_cast<std::uint32_t>(starts_.size());
+    groups_.push_back(g);
+  }
+}
+
+/// True when a and b lie on one vertical segment that both name (an end of it, or a crossing of
+/// it): then their x are equal, known without a predicate (which could only end in an exact stage).
+bool Sweep::on_vertical(const Event& a, const Event& b) const {
+  const auto on = [&](std::uint32_t s, const Event& e) { return e.i == s || (!e.p && e.j == s); };
+  return (pieces_[a.i].vertical && on(a.i, b)) || (!a.p && pieces_[a.j].vertical && on(a.j, b));
+}
+
+/// compare_xy of two events of either form; two copies of one crossing are equal at once.
+Sign Sweep::compare_events(const Event& a, const Event& b) const {
+  if (a.p && b.p) return compare_xy(*a.p, *b.p);
+  if (!a.p && !b.p && a.i == b.i && a.j == b.j) return ZERO;
+  if (on_vertical(a, b)) {
+    if (a.p) return -compare_y(b.m, *a.p);
+    return b.p ? compare_y(a.m, *b.p) : compare_y(a.m, b.m);
+  }
+  if (a.p) return compare_xy(*a.p, b.m);
+  if (b.p) return compare_xy(a.m, *b.p);
+  return compare_xy(a.m, b.m);
 }
 
 /// The side of the current event on segment i's line (positive: the segment is below it). A
 /// vertical segment in the status always holds the event (it is there from its lower end to its
-/// upper end, and every event in between lies on it): ZERO.
+/// upper end, and every event in between lies on it): ZERO. So do the ends of i and the
+/// crossings of i, known without a predicate.
 Sign Sweep::side_of_event(std::size_t i) const {
   const Piece& p = pieces_[i];
   if (p.vertical) return ZERO;
-  return std::visit([&](const auto& e) { return side(p.line, e); }, current_);
+  if (current_.p) {
+    if (current_.p == &p.left || current_.p == &p.right) return ZERO;
+    return orient(p.left, p.right, *current_.p);
+  }
+  if (i == current_.i || i == current_.j) return ZERO;
+  return orient(p.left, p.right, current_.m);
 }
 
 bool Sweep::below(std::size_t a, std::size_t b) const {
@@ -128,76 +186,119 @@ bool Sweep::below(std::size_t a, std::size_t b) const {
   if (sb != ZERO) return sb == NEGATIVE;  // b above the event, a through it
   const Piece &p = pieces_[a], &q = pieces_[b];
   if (p.vertical || q.vertical) return p.vertical == q.vertical ? a < b : q.vertical;
-  const Sign w = turn(p.line, q.line);
+  const Sign w = turn(p.left, p.right, q.left, q.right);
   return w != ZERO ? w == POSITIVE : a < b;
 }
 
 /// Schedules the crossing of a and b (neighbours in the status) if it comes after the event.
 void Sweep::check(std::size_t a, std::size_t b) {
-  const Piece &p = pieces_[a], &q = pieces_[b];
-  const Sign w = turn(p.line, q.line);
+  const Sign w = turn(pieces_[a].left, pieces_[a].right, pieces_[b].left, pieces_[b].right);
   if (w == ZERO) return;  // parallel or collinear: overlaps are found at their endpoints
-  if (!intersects(ExactSegment(p.left, p.right), ExactSegment(q.left, q.right))) return;
-  Meet m = w == POSITIVE ? Meet{p.line, q.line} : Meet{q.line, p.line};  // the front one
-  Event e(std::move(m));
-  if (compare_events(e, current_) == POSITIVE) queue_.try_emplace(std::move(e));
+  {  // segment.hpp's `intersects` without its degenerate cases: neither is a point (points never
+     // enter the status) and their lines differ (w ≠ 0)
+    const Point &pa = pieces_[a].left, &pb = pieces_[a].right, &qa = pieces_[b].left, &qb = pieces_[b].right;
+    const int s1 = orient(pa, pb, qa), s2 = orient(pa, pb, qb), s3 = orient(qa, qb, pa), s4 = orient(qa, qb, pb);
+    if (!((s3 >= 0 && s4 <= 0 && s1 <= 0 && s2 >= 0) || (s3 <= 0 && s4 >= 0 && s1 >= 0 && s2 <= 0))) return;
+  }
+  if (w == NEGATIVE) std::swap(a, b);  // the front one of the two meets: turn(a, b) > 0
+  const Piece &p = pieces_[a], &q = pieces_[b];
+  Event e;
+  // join_meet would compute this turn again: its w is the sign just found, made positive.
+  e.m = JoinMeet<double>{&p.left, &p.right, &q.left, &q.right, POSITIVE};
+  e.i = static_cast<std::uint32_t>(std::min(a, b));
+  e.j = static_cast<std::uint32_t>(std::max(a, b));
+  if (compare_events(e, current_) == POSITIVE) {
+    heap_.push_back(e);
+    std::push_heap(heap_.begin(), heap_.end(), Later{this});
+  }
 }
 
-void Sweep::handle(const Event& e, std::vector<std::size_t>& upper, std::vector<IntersectionPoint>& out) {
+void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::uint32_t* upper_end,
+                   std::vector<IntersectionPoint>& out) {
   current_ = e;
-  // The segments of the status through e: one run, from the first not below e.
-  std::vector<std::size_t> lower, inner;
-  for (auto it = status_.lower_bound(Probe{}); it != status_.end() && side_of_event(*it) == ZERO; ++it) {
-    const Event r(pieces_[*it].right);
-    (compare_events(r, e) == ZERO ? lower : inner).push_back(*it);
+  // The segments of the status through e: one run. For a crossing alone the run holds i, and
+  // is found from i's place without a search; else from the first segment not below e. A
+  // segment ends at e only if e is an endpoint: a crossing equal to an endpoint is taken with it.
+  lower_.clear();
+  inner_.clear();
+  auto first = status_.end();
+  if (e.p) {
+    first = status_.lower_bound(Probe{});
+  } else {
+    first = where_[e.i];
+    while (first != status_.begin() && side_of_event(*std::prev(first)) == ZERO) --first;
   }
-  const std::size_t through = upper.size() + lower.size() + inner.size();
-  if (through >= 2) {
-    bool report = !upper.empty() || !lower.empty();
-    for (std::size_t k = 1; !report && k < inner.size(); ++k)
-      report = turn(pieces_[inner[0]].line, pieces_[inner[k]].line) != ZERO ||
-               pieces_[inner[0]].vertical != pieces_[inner[k]].vertical;
+  auto above = first;  // then the first segment above e, or the end
+  for (; above != status_.end() && side_of_event(*above) == ZERO; ++above) {
+    const bool ends = e.p && compare_xy(pieces_[*above].right, *e.p) == ZERO;
+    (ends ? lower_ : inner_).push_back(*above);
+  }
+  const std::size_t n_upper = static_cast<std::size_t>(upper_end - upper_begin);
+  if (n_upper + lower_.size() + inner_.size() >= 2) {
+    bool report = n_upper > 0 || !lower_.empty();
+    for (std::size_t k = 1; !report && k < inner_.size(); ++k) {
+      const Piece &p = pieces_[inner_[0]], &q = pieces_[inner_[k]];
+      report = p.vertical != q.vertical || turn(p.left, p.right, q.left, q.right) != ZERO;
+    }
     if (report) {
-      IntersectionPoint ip{reduced(std::visit(
-                               [](const auto& v) {
-                                 if constexpr (std::is_same_v<std::decay_t<decltype(v)>, ExactPoint>) return v;
-                                 else return point_of(v);
-                               },
-                               e)),
-                           {}};
-      ip.segments = upper;
-      ip.segments.insert(ip.segments.end(), lower.begin(), lower.end());
-      ip.segments.insert(ip.segments.end(), inner.begin(), inner.end());
+      IntersectionPoint ip{reduced(e.p ? to_exact(*e.p) : to_exact(e.m)), {}};
+      ip.segments.assign(upper_begin, upper_end);
+      ip.segments.insert(ip.segments.end(), lower_.begin(), lower_.end());
+      ip.segments.insert(ip.segments.end(), inner_.begin(), inner_.end());
       std::sort(ip.segments.begin(), ip.segments.end());
       out.push_back(std::move(ip));
     }
   }
-  for (std::size_t i : lower) status_.erase(where_[i]);
-  for (std::size_t i : inner) status_.erase(where_[i]);
-  bool inserted = false;
-  auto insert = [&](std::size_t i) {
-    if (pieces_[i].point) return;
-    where_[i] = status_.insert(i).first;
-    inserted = true;
-  };
-  for (std::size_t i : upper) insert(i);
-  for (std::size_t i : inner) insert(i);
-  auto lo = status_.lower_bound(Probe{});  // the first segment through e, or the first above e
-  if (!inserted) {
-    if (lo != status_.begin() && lo != status_.end()) check(*std::prev(lo), *lo);
+  for (std::size_t i : lower_) status_.erase(where_[i]);
+  for (std::size_t i : inner_) moved_.push_back(status_.extract(where_[i]));  // put back below, no allocation
+  // The segments through e that go on, in their order just right of e, each put just below
+  // `above` (std::set's hint: no search when it is right, and right when they come in order).
+  order_.clear();
+  for (const std::uint32_t* i = upper_begin; i != upper_end; ++i)
+    if (!pieces_[*i].point) order_.push_back(*i);
+  order_.insert(order_.end(), inner_.begin(), inner_.end());
+  std::sort(order_.begin(), order_.end(), [this](std::size_t a, std::size_t b) { return below(a, b); });
+  for (std::size_t i : order_) {
+    auto node = std::find_if(moved_.begin(), moved_.end(), [i](const auto& n) { return !n.empty() && n.value() == i; });
+    where_[i] = node != moved_.end() ? status_.insert(above, std::move(*node)) : status_.insert(above, i);
+  }
+  moved_.clear();
+  if (order_.empty()) {
+    if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above);
     return;
   }
-  auto hi = lo;
-  while (std::next(hi) != status_.end() && side_of_event(*std::next(hi)) == ZERO) ++hi;
+  const auto lo = where_[order_.front()], hi = where_[order_.back()];
   if (lo != status_.begin()) check(*std::prev(lo), *lo);
   if (std::next(hi) != status_.end()) check(*hi, *std::next(hi));
 }
 
 std::vector<IntersectionPoint> Sweep::run() {
   std::vector<IntersectionPoint> out;
-  while (!queue_.empty()) {
-    auto node = queue_.extract(queue_.begin());
-    handle(node.key(), node.mapped(), out);
+  std::size_t g = 0;
+  while (g < groups_.size() || !heap_.empty()) {
+    Event e;
+    const std::uint32_t *upper_begin = nullptr, *upper_end = nullptr;
+    bool endpoint = heap_.empty();
+    if (!endpoint && g < groups_.size()) {
+      Event first;
+      first.p = groups_[g].p;
+      first.i = groups_[g].segment;
+      endpoint = compare_events(first, heap_.front()) != POSITIVE;
+    }
+    if (endpoint) {
+      e.p = groups_[g].p;
+      e.i = groups_[g].segment;
+      upper_begin = starts_.data() + groups_[g].begin;
+      upper_end = starts_.data() + groups_[g].end;
+      ++g;
+    } else {
+      e = heap_.front();
+    }
+    while (!heap_.empty() && compare_events(heap_.front(), e) == ZERO) {  // every copy of e
+      std::pop_heap(heap_.begin(), heap_.end(), Later{this});
+      heap_.pop_back();
+    }
+    handle(e, upper_begin, upper_end, out);
   }
   return out;
 }
