@@ -46,9 +46,14 @@ struct ProximitySites {
   /// The planar Delaunay edges of each side between kept sites, (a, b) with a < b; for a side
   /// whose sites are collinear, its consecutive sites along their line.
   std::vector<std::pair<Index, Index>> edges;
-  std::vector<Index> front, back, omega;  ///< the kept sites of each part, ascending
-  /// Each side's hull vertices (every kept site of a side of dimension ≤ 1), ascending.
-  std::vector<Index> front_extremes, back_extremes;
+  std::vector<Index> front;  ///< the kept sites on the front side, ascending
+  std::vector<Index> back;   ///< the kept sites on the back side, ascending
+  std::vector<Index> omega;  ///< the kept sites on Ω, ascending
+  /// The front side's hull vertices (every kept front site if they span a dimension ≤ 1),
+  /// ascending.
+  std::vector<Index> front_extremes;
+  /// The back side's hull vertices, likewise.
+  std::vector<Index> back_extremes;
 };
 
 /// The candidates of `points` (see the file comment). Throws `BadInput` for more points than
