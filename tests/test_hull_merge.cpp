@@ -71,7 +71,9 @@ TEST(HullMerge, OrientationTestsGrowLinearlyOnACircleOnBothSides) {
     const auto calls = static_cast<double>(CountingOrient::calls);
     EXPECT_TRUE(same_cycle(at(P, H), want)) << "n = " << n;
     EXPECT_LE(calls, 2.0 * h1 + 7.0 * h2) << "n = " << n;  // the theorem's bound
-    if (before > 0) EXPECT_LE(calls, 2.2 * before) << "n = " << n;  // doubling n: about twice the tests
+    if (before > 0) {
+      EXPECT_LE(calls, 2.2 * before) << "n = " << n;  // doubling n: about twice the tests
+    }
     before = calls;
   }
 }

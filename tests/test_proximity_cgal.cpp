@@ -64,7 +64,9 @@ TEST(ProximityCgal, KruskalOnCgalDelaunayEdges) {
         if (near[v] < 0 || d < near[v]) near[v] = d;
     }
     for (std::uint32_t i = 0; i < P.size(); ++i)
-      if (near[i] >= 0) EXPECT_EQ(testing::pair_weight(P[i], P[nn[i]]).second.get_d(), near[i]) << i;
+      if (near[i] >= 0) {
+        EXPECT_EQ(testing::pair_weight(P[i], P[nn[i]]).second.get_d(), near[i]) << i;
+      }
     // The closest pair is the shortest of CGAL's edges.
     const Edge cp = closest_pair(P);
     double shortest = -1;
