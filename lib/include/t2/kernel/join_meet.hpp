@@ -52,9 +52,9 @@ namespace t2 {
 template <class T>
 struct JoinMeet {
   const BasicPoint<T>* a;  ///< the first line is a ∨ b
-  const BasicPoint<T>* b;
+  const BasicPoint<T>* b;  ///< the second point of the first line
   const BasicPoint<T>* c;  ///< the second line is c ∨ d
-  const BasicPoint<T>* d;
+  const BasicPoint<T>* d;  ///< the second point of the second line
   Sign w;  ///< the sign of w: POSITIVE for a front point, ZERO on Ω
 };
 
