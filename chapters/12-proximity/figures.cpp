@@ -1,0 +1,85 @@
+// The sites of chapter 12 and its figures, in the planar and the spherical model.
+#include "figures.hpp"
+
+#include <t2/draw.hpp>
+#include <t2/gen/generate.hpp>
+#include <t2/proximity/nearest_neighbors.hpp>
+#include <t2/proximity/spanning_tree.hpp>
+#include <t2/triangulation/delaunay.hpp>
+
+#include <iostream>
+#include <string>
+
+namespace chapter12 {
+
+namespace dr = t2::draw;
+namespace pal = t2::draw::palette;
+using t2::Point;
+
+std::vector<Point> small_sites() {
+  return {Point::cartesian(0, 0),  Point::cartesian(2, 1), Point::cartesian(-1, 2), Point::cartesian(3, -2),
+          Point(-1, -3, 1), Point(-1, 2, 3), Point(0, 1, -1), Point(0, 1, 0)};
+}
+
+namespace {
+
+void sites(dr::Figure& f, const std::vector<Point>& P, bool labels) {
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    dr::Style s = dr::Style().size(labels ? 3.5 : 2);
+    if (labels) s.label("p" + std::to_string(i));
+    f.add(P[i], s);
+  }
+}
+
+}  // namespace
+
+void figures(const std::filesystem::path& dir) {
+  int written = 0, count = 0;
+  const auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv,
+                        const dr::SphereView& sv) {
+    written += dr::save(f, pv, dir / (name + "-plane.svg"));
+    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
+    count += 2;
+  };
+  const dr::Style tree = dr::Style().color(pal::red).width(2.2);
+  {  // The tree of front sites inside their Delaunay triangulation.
+    t2::gen::Options o;
+    o.n = 60;
+    o.seed = 12;
+    const auto P = t2::gen::points(t2::gen::Kind::disk, o);
+    dr::Figure f;
+    for (const auto& t : t2::delaunay(P).finite_triangles())
+      for (int k = 0; k < 3; ++k) f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(pal::grey).width(0.8));
+    for (const auto& [i, j] : t2::minimum_spanning_tree(P)) f.segment(P[i], P[j], tree);
+    sites(f, P, false);
+    dr::PlaneView pv;
+    pv.half_width = 1.1;
+    dr::SphereView sv;
+    sv.lat = 70;
+    sv.lon = -90;
+    save(f, "emst-delaunay", pv, sv);
+  }
+  dr::PlaneView wide;
+  wide.half_width = 4.5;
+  dr::SphereView aside;
+  aside.lat = 20;
+  aside.lon = -60;
+  const auto P = small_sites();
+  {  // The tree of the eight sites: finite edges, one at +∞, one beyond infinity.
+    dr::Figure f;
+    for (const auto& [i, j] : t2::minimum_spanning_tree(P)) f.segment(P[i], P[j], tree);
+    sites(f, P, true);
+    save(f, "emst-t2", wide, aside);
+  }
+  {  // Each site's nearest, an arrow from it.
+    dr::Figure f;
+    const auto nearest = t2::all_nearest_neighbors(P);
+    for (std::size_t i = 0; i < P.size(); ++i)
+      f.segment(P[i], P[nearest[i]], dr::Style().color(pal::blue).width(1.6).arrow());
+    sites(f, P, true);
+    save(f, "ann-t2", wide, aside);
+  }
+  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+}
+
+}  // namespace chapter12
