@@ -55,11 +55,15 @@ LocusCounter::LocusCounter(std::span<const Point> points) {
     const std::size_t ny = g.ys.size() + 1;
     g.q.assign((g.xs.size() + 1) * ny, 0);
     //> locus-build
-    for (std::size_t k = 0; k < xs.size(); ++k)  // C: a point counts at the corner above-right of it
+    // C: each point counts at the grid corner above and right of it.
+    for (std::size_t k = 0; k < xs.size(); ++k)
       ++g.q[(below(g.xs, xs[k]) + 1) * ny + below(g.ys, ys[k]) + 1];
-    for (std::size_t i = 1; i <= g.xs.size(); ++i)  // Q(i, j): the points with x rank < i, y rank < j
-      for (std::size_t j = 1; j < ny; ++j)
-        g.q[i * ny + j] += g.q[(i - 1) * ny + j] + g.q[i * ny + j - 1] - g.q[(i - 1) * ny + j - 1];
+    // Q(i, j): the points with x rank < i and y rank < j (prefix sums).
+    for (std::size_t i = 1; i <= g.xs.size(); ++i)
+      for (std::size_t j = 1; j < ny; ++j) {
+        const std::size_t at = i * ny + j;
+        g.q[at] += g.q[at - ny] + g.q[at - 1] - g.q[at - ny - 1];
+      }
     //< locus-build
   }
 }
