@@ -160,12 +160,7 @@ void generated() {
 }
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   const dr::Style hull_style = dr::Style().fill(pal::green).fill_opacity(0.2).color(pal::green).width(1.6);
   dr::PlaneView plane;
   plane.half_width = 5;
@@ -182,7 +177,7 @@ void figures(const std::filesystem::path& dir) {
     dr::SphereView above;  // from the centre of the hemisphere 2w − x > 0, tilted down
     above.lat = 35;
     above.lon = 180;
-    save(f, "crossing", plane, above);
+    out.save(f, "crossing", plane, above);
   }
   {  // No hull: p0, p1, p2 front, p3 the back point whose antipode is inside their triangle.
     const std::vector<Point> B{Point::cartesian(-2, -1), Point::cartesian(2, -1), Point::cartesian(0, 2), Point(-1, 0, 0)};
@@ -193,7 +188,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(t2::antipode(B[3]), dr::Style().label("~p3").color(pal::red));
     dr::PlaneView small;
     small.half_width = 3;
-    save(f, "no-hull", small, sphere);
+    out.save(f, "no-hull", small, sphere);
     dr::Figure g;  // an antipodal pair: the segment between them is undefined
     const Point p = Point::cartesian(1, 0.5), q = t2::antipode(Point::cartesian(1, 0.5));
     g.add(p, dr::Style().label("p"));
@@ -202,7 +197,7 @@ void figures(const std::filesystem::path& dir) {
     g.segment(r, p, dr::Style().color(pal::red).dash({4, 3}));  // both segments exist; together
     g.segment(r, q, dr::Style().color(pal::red).dash({4, 3}));  // they are half a great circle
     g.add(r, dr::Style().label("r"));
-    save(g, "antipodal", small, sphere);
+    out.save(g, "antipodal", small, sphere);
   }
   {  // The lower bound: points on the parabola y = x², all on the hull.
     std::vector<Point> P;
@@ -214,9 +209,9 @@ void figures(const std::filesystem::path& dir) {
     for (const Point& p : P) f.add(p);
     dr::PlaneView pv;
     pv.half_width = 3;
-    save(f, "parabola", pv, sphere);
+    out.save(f, "parabola", pv, sphere);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace

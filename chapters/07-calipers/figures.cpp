@@ -69,12 +69,7 @@ std::vector<Point> corners(const t2::PolygonKernel& K) {
 }  // namespace
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  const auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   const dr::Style green = dr::Style().fill(pal::green).fill_opacity(0.2).color(pal::green).width(1.6);
   const dr::Style red = dr::Style().color(pal::red).width(2.2);
   dr::PlaneView plane;
@@ -88,7 +83,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(at(P, t2::melkman(P)), green);
     f.add(P, dr::Style().width(1.4));
     for (std::size_t i = 0; i < P.size(); ++i) f.add(P[i], dr::Style().label("v" + std::to_string(i)));
-    save(f, "melkman", plane, sphere);
+    out.save(f, "melkman", plane, sphere);
   }
   {  // The calipers on the hexagon: every antipodal pair, the diameter, the narrowest strip.
     const auto H = hexagon();
@@ -104,7 +99,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(edge, dr::Style().color(pal::orange).width(1.2));
     f.add(t2::join(H[w->vertex], t2::meet(edge, t2::omega<double>())), dr::Style().color(pal::orange).width(1.2));
     for (std::size_t i = 0; i < H.size(); ++i) f.add(H[i], dr::Style().label("p" + std::to_string(i)));
-    save(f, "calipers", plane, sphere);
+    out.save(f, "calipers", plane, sphere);
   }
   {  // The diameter across Ω: the front-back pair nearest as drawn.
     const std::vector<Point> M = front_and_back();
@@ -114,7 +109,7 @@ void figures(const std::filesystem::path& dir) {
     for (std::size_t i = 0; i < M.size(); ++i) f.add(M[i], dr::Style().label("p" + std::to_string(i)));
     dr::PlaneView wide;
     wide.half_width = 8;
-    save(f, "diameter-t2", wide, sphere);
+    out.save(f, "diameter-t2", wide, sphere);
   }
   {  // Convex layers of 200 points in a disk.
     t2::gen::Options o;
@@ -133,7 +128,7 @@ void figures(const std::filesystem::path& dir) {
     for (const auto& p : P) f.add(p, dr::Style().size(1.5));
     dr::PlaneView unit;
     unit.half_width = 1.15;
-    save(f, "layers", unit, sphere);
+    out.save(f, "layers", unit, sphere);
   }
   {  // Kernels: a star polygon (bounded) and the notched half-plane (unbounded, corners on Ω).
     t2::gen::Options o;
@@ -146,15 +141,15 @@ void figures(const std::filesystem::path& dir) {
     f.add(Point(1, 0, 0), dr::Style().label("origin").color(pal::red));
     dr::PlaneView unit;
     unit.half_width = 1.2;
-    save(f, "kernel-star", unit, sphere);
+    out.save(f, "kernel-star", unit, sphere);
     const auto N = notched_half_plane();
     dr::Figure g;
     g.add(corners(t2::polygon_kernel(N)), green);
     g.add(N, dr::Style().width(1.4));
     for (std::size_t i = 0; i < N.size(); ++i) g.add(N[i], dr::Style().label("v" + std::to_string(i)));
-    save(g, "kernel-unbounded", plane, sphere);
+    out.save(g, "kernel-unbounded", plane, sphere);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace chapter07

@@ -221,12 +221,7 @@ void divide() {
 }
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   dr::SphereView sphere;
   sphere.lat = 40;
   sphere.lon = -20;
@@ -245,7 +240,7 @@ void figures(const std::filesystem::path& dir) {
     for (int k = 0; k < 4; ++k) f.add(Q[k], dr::Style().label("q" + std::to_string(k)));
     dr::PlaneView pv;
     pv.half_width = 3.5;
-    save(f, "heights", pv, sphere);
+    out.save(f, "heights", pv, sphere);
   }
   {  // Forty points: the sweep's triangulation and the Delaunay triangulation after the flips.
     t2::gen::Options o;
@@ -263,7 +258,7 @@ void figures(const std::filesystem::path& dir) {
         f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
               dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08));
       for (const Point& p : P) f.add(p, dr::Style().size(2.5));
-      save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
+      out.save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
     }
   }
   // Seed 000, figures 5.21 and 5.18 redrawn with the library's T² Delaunay triangulation: points
@@ -281,7 +276,7 @@ void figures(const std::filesystem::path& dir) {
           f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(pal::red).width(1.6));
     }
     for (std::size_t k = 0; k < P.size(); ++k) f.add(P[k], dr::Style().label("p" + std::to_string(k)));
-    save(f, name, pv, sphere);
+    out.save(f, name, pv, sphere);
   };
   {
     t2::gen::Options o;
@@ -305,7 +300,7 @@ void figures(const std::filesystem::path& dir) {
     pv.half_width = 1.6;
     t2_figure(Z, "omega", pv);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace

@@ -246,12 +246,7 @@ std::vector<Point> fit(const std::vector<Point>& P, double cx, double cy, double
 }
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv, const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   const dr::Style red = dr::Style().color(pal::red).width(1.8);
   const dr::Style faint = dr::Style().color(pal::light_grey).width(1.2);
   dr::SphereView above;
@@ -267,7 +262,7 @@ void figures(const std::filesystem::path& dir) {
     label_sites(f, P);
     dr::PlaneView pv;
     pv.half_width = half_width;
-    save(f, name, pv, sv);
+    out.save(f, name, pv, sv);
   };
   // Figure 5.23: front sites; the diagram reaches across Ω into the back.
   plain(fit(kSix, 2, 2.5, 4), dr::Figure(), "front", 1.5, above);
@@ -285,7 +280,7 @@ void figures(const std::filesystem::path& dir) {
     label_sites(g, Q);
     dr::PlaneView pv;
     pv.half_width = 3;
-    save(g, "farthest", pv, below);
+    out.save(g, "farthest", pv, below);
   }
   // Figure 5.22: sites on both sides.
   dr::SphereView side = above;
@@ -297,7 +292,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(t2::circle_through(P[0], P[1], P[2]), dr::Style().color(pal::light_grey).dash({3, 3}));
     plain(P, f, "cocircular", 1.6, above);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace

@@ -34,13 +34,7 @@ void sites(dr::Figure& f, const std::vector<Point>& P, bool labels) {
 }  // namespace
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  const auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv,
-                        const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   const dr::Style tree = dr::Style().color(pal::red).width(2.2);
   {  // The tree of front sites inside their Delaunay triangulation.
     t2::gen::Options o;
@@ -57,7 +51,7 @@ void figures(const std::filesystem::path& dir) {
     dr::SphereView sv;
     sv.lat = 70;
     sv.lon = -90;
-    save(f, "emst-delaunay", pv, sv);
+    out.save(f, "emst-delaunay", pv, sv);
   }
   dr::PlaneView wide;
   wide.half_width = 4.5;
@@ -69,7 +63,7 @@ void figures(const std::filesystem::path& dir) {
     dr::Figure f;
     for (const auto& [i, j] : t2::minimum_spanning_tree(P)) f.segment(P[i], P[j], tree);
     sites(f, P, true);
-    save(f, "emst-t2", wide, aside);
+    out.save(f, "emst-t2", wide, aside);
   }
   {  // Each site's nearest, an arrow from it.
     dr::Figure f;
@@ -77,9 +71,9 @@ void figures(const std::filesystem::path& dir) {
     for (std::size_t i = 0; i < P.size(); ++i)
       f.segment(P[i], P[nearest[i]], dr::Style().color(pal::blue).width(1.6).arrow());
     sites(f, P, true);
-    save(f, "ann-t2", wide, aside);
+    out.save(f, "ann-t2", wide, aside);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace chapter12

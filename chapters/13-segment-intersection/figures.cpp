@@ -98,19 +98,13 @@ std::vector<Segment> sweep_example() {
 }
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  const auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv,
-                        const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   // A set of segments with what the brute force reports, in a plane of the given half width.
   const auto answer = [&](const std::vector<Segment>& S, const std::string& name, double half_width,
                           const dr::SphereView& sv) {
     dr::PlaneView pv;
     pv.half_width = half_width;
-    save(picture(S, t2::intersections(S, t2::IntersectAlgorithm::brute)), name, pv, sv);
+    out.save(picture(S, t2::intersections(S, t2::IntersectAlgorithm::brute)), name, pv, sv);
   };
   dr::SphereView from_above;  // the front pole in the middle
   from_above.lat = 90;
@@ -152,7 +146,7 @@ void figures(const std::filesystem::path& dir) {
     dr::SphereView sv;
     sv.lat = 65;
     sv.lon = -90;
-    save(f, "sweep", pv, sv);
+    out.save(f, "sweep", pv, sv);
   }
   {  // Algorithm 16: the half-line from o to ¬o through [0, 1, 0], and a segment across it.
     const Point o(1, 0, 0), d(0, 1, 0), anti_o(-1, 0, 0);
@@ -173,9 +167,9 @@ void figures(const std::filesystem::path& dir) {
       f.add(t2::to_double(x.point), dr::Style().color(pal::red).size(4.5));
     dr::PlaneView pv;
     pv.half_width = 4;
-    save(f, "circular", pv, towards(Point::cartesian(1.5, 0.2)));
+    out.save(f, "circular", pv, towards(Point::cartesian(1.5, 0.2)));
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace chapter13

@@ -38,13 +38,7 @@ IsoRect below_left(double x, double y) { return IsoRect(Point::cartesian(x, y), 
 }  // namespace
 
 void figures(const std::filesystem::path& dir) {
-  int written = 0, count = 0;
-  const auto save = [&](const dr::Figure& f, const std::string& name, const dr::PlaneView& pv,
-                        const dr::SphereView& sv) {
-    written += dr::save(f, pv, dir / (name + "-plane.svg"));
-    written += dr::save(f, sv, dir / (name + "-sphere.svg"));
-    count += 2;
-  };
+  dr::FigurePairs out(dir);
   const dr::Style shade = dr::Style().color(pal::blue).width(1.2).fill(pal::blue).fill_opacity(0.15);
   dr::PlaneView pv;
   pv.half_width = 3.5;
@@ -57,7 +51,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(below_left(1.5, 0.5), shade);
     points(f, P);
     f.add(Point::cartesian(1.5, 0.5), dr::Style().color(pal::red).size(4.5).label("q: Q(q) = 2").label_angle(30));
-    save(f, "dominance", pv, above);
+    out.save(f, "dominance", pv, above);
   }
   {  // Figure 5.39: a rectangle by inclusion and exclusion of four quadrants.
     dr::Figure f;
@@ -67,7 +61,7 @@ void figures(const std::filesystem::path& dir) {
     const double xy[][2] = {{-1.5, -1.5}, {1.5, -1.5}, {1.5, 1.5}, {-1.5, 1.5}};
     for (int k = 0; k < 4; ++k)
       f.add(Point::cartesian(xy[k][0], xy[k][1]), dr::Style().color(pal::red).size(4).label(names[k]).label_angle(-45));
-    save(f, "inclusion-exclusion", pv, above);
+    out.save(f, "inclusion-exclusion", pv, above);
   }
   {  // Figures 5.40-5.42: the grid of the lines through the points, and Q at its corners.
     const t2::LocusCounter L(P);
@@ -80,7 +74,7 @@ void figures(const std::filesystem::path& dir) {
     for (double x : {-1.5, -0.5, 0.5, 1.5, 2.5})
       for (double y : {-1.5, -0.5, 0.5, 1.5, 2.5})
         f.add(Point::cartesian(x, y), dr::Style().color(pal::red).size(1.5).label(std::to_string(L.count(below_left(x, y)))));
-    save(f, "grid", pv, above);
+    out.save(f, "grid", pv, above);
   }
   {  // Rectangles of T²: a box, a quadrant reaching Ω, one on the back side.
     const auto M = mixed_points();
@@ -96,9 +90,9 @@ void figures(const std::filesystem::path& dir) {
     dr::SphereView aside;
     aside.lat = 35;
     aside.lon = -60;
-    save(f, "rectangles-t2", wide, aside);
+    out.save(f, "rectangles-t2", wide, aside);
   }
-  std::cerr << "figures: " << count << " in " << dir.string() << " (" << written << " changed)\n";
+  std::cerr << out.summary() << "\n";
 }
 
 }  // namespace chapter15

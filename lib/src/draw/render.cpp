@@ -269,6 +269,16 @@ bool save_both(const Figure& f, const PlaneView& plane, const SphereView& sphere
   return update_file_atomically(path, render_both(f, plane, sphere, format_of(path)));
 }
 
+void FigurePairs::save(const Figure& f, const std::string& name, const PlaneView& plane, const SphereView& sphere) {
+  written_ += draw::save(f, plane, dir_ / (name + "-plane.svg"));
+  written_ += draw::save(f, sphere, dir_ / (name + "-sphere.svg"));
+  count_ += 2;
+}
+
+std::string FigurePairs::summary() const {
+  return "figures: " + std::to_string(count_) + " in " + dir_.string() + " (" + std::to_string(written_) + " changed)";
+}
+
 std::filesystem::path figures_dir(int argc, char** argv, const std::filesystem::path& fallback) {
   for (int i = 1; i + 1 < argc; ++i)
     if (std::string(argv[i]) == "--figures") return argv[i + 1];

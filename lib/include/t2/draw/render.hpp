@@ -93,6 +93,23 @@ bool save(const Figure& f, const T1View& v, const std::filesystem::path& path);
 bool save_both(const Figure& f, const PlaneView& plane, const SphereView& sphere,
                const std::filesystem::path& path);
 
+/// The figures of a chapter program in both models: `save` writes NAME-plane.svg and
+/// NAME-sphere.svg into one folder (each only when it changed, as `save` does), and `summary`
+/// says how many there are and how many changed.
+class FigurePairs {
+ public:
+  /// Figures go to `dir`.
+  explicit FigurePairs(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  /// Writes `f` as NAME-plane.svg (seen in `plane`) and NAME-sphere.svg (seen in `sphere`).
+  void save(const Figure& f, const std::string& name, const PlaneView& plane, const SphereView& sphere);
+  /// "figures: N in DIR (K changed)".
+  std::string summary() const;
+
+ private:
+  std::filesystem::path dir_;
+  int count_ = 0, written_ = 0;
+};
+
 /// The figures directory of a chapter program: the value after `--figures` in argv, else
 /// `fallback` (chapters pass their compile definition T2_FIGURES_DIR).
 std::filesystem::path figures_dir(int argc, char** argv, const std::filesystem::path& fallback);
