@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 01: the API you implement in classify.cpp. Do not change this file.
-#include <t2/kernel/point.hpp>
+#include <t2/kernel/point_type.hpp>
 
 namespace ex01 {
 

@@ -2,7 +2,7 @@
 // Exercise 02b: the API you implement in clip.cpp. Do not change this file.
 #include <vector>
 
-#include <t2/kernel/point.hpp>
+#include <t2/kernel/point_type.hpp>
 
 namespace ex02b {
 

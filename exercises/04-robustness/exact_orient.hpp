@@ -1,6 +1,6 @@
 #pragma once
 // Exercise 04: the API you implement in exact_orient.cpp. Do not change this file.
-#include <t2/kernel/point.hpp>
+#include <t2/kernel/point_type.hpp>
 #include <t2/kernel/sign.hpp>
 
 namespace ex04 {
