@@ -26,7 +26,7 @@ gen::Options opts(std::size_t n, std::uint64_t seed = 7) {
 }
 
 TEST(Gen, NamesRoundTrip) {
-  EXPECT_EQ(gen::all_kinds().size(), 20u);
+  EXPECT_EQ(gen::all_kinds().size(), 21u);
   for (Kind k : gen::all_kinds()) EXPECT_EQ(gen::kind_from_name(gen::name(k)), k);
   EXPECT_THROW(gen::kind_from_name("gaussian"), BadInput);
 }
@@ -138,6 +138,22 @@ TEST(Gen, BothSidesHasTheShareBehindAndAnOpenHemisphere) {
     }
     EXPECT_EQ(behind, static_cast<std::size_t>(std::llround(back * 1000)));
   }
+}
+
+// The circle around the Ω point [0, 1, 0]: w² + y² = x² exactly, x > 0 (one circle of the sphere,
+// in the open hemisphere x > 0, so its hull exists), and both sides well represented.
+TEST(Gen, CircleBothSidesIsExactlyOnACircleAroundAnOmegaPoint) {
+  const auto pts = gen::points(Kind::circle_both_sides, opts(3000));
+  ASSERT_EQ(pts.size(), 3000u);
+  std::size_t front = 0, back = 0;
+  for (const auto& p : pts) {
+    EXPECT_EQ(q(p.w()) * q(p.w()) + q(p.y()) * q(p.y()), q(p.x()) * q(p.x())) << to_string(p);
+    EXPECT_GT(p.x(), 0) << to_string(p);
+    front += p.w() > 0;
+    back += p.w() < 0;
+  }
+  EXPECT_GT(front, 1000u);
+  EXPECT_GT(back, 1000u);
 }
 
 TEST(Gen, AntipodalPairsAndPointsAtInfinity) {

@@ -38,6 +38,7 @@ const Info kInfo[] = {
     {Kind::both_sides, "both-sides", "front and back points (--back share behind), hull crossing Omega"},
     {Kind::antipodal, "antipodal", "front points plus the antipodes of a tenth of them (no hull)"},
     {Kind::infinity, "infinity", "half front points, half at infinity in directions with dx > 0"},
+    {Kind::circle_both_sides, "circle-both-sides", "exactly on a circle around the Omega point [0,1,0]: [a, c, b] with a^2+b^2 = c^2, both sides"},
     {Kind::cube, "cube", "3-D: uniform in the cube [-1,1)^3 (lines x y z)"},
     {Kind::sphere, "sphere", "3-D: on the unit sphere, rounded (lines x y z)"},
     {Kind::simple_polygon, "simple-polygon", "a random simple polygon (space partitioning; --untangle: 2-opt)"},
@@ -142,6 +143,12 @@ std::vector<Point> make_points(Kind k, const Options& o) {
       break;
     case Kind::circle:
       for (std::size_t i = 0; i < n; ++i) out.push_back(on_circle(r, o.cartesian));
+      break;
+    case Kind::circle_both_sides:  // the unit circle's points [c, a, b] as [a, c, b]: w = a changes sign
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point p = on_circle(r, false);
+        out.push_back(Point(p.x(), p.w(), p.y()));
+      }
       break;
     case Kind::segment:
       for (std::size_t i = 0; i < n; ++i) {

@@ -35,6 +35,8 @@ enum class Kind {
   both_sides,        ///< front and back points, a share `back` behind, with a hull crossing Ω
   antipodal,         ///< front points and the antipodes of a tenth of them: no hull
   infinity,          ///< half front points, half points at infinity in directions (dx > 0, dy)
+  circle_both_sides, ///< exactly on the circle of the sphere around the Ω point [0, 1, 0]: [a, c, b]
+                     ///< with a² + b² = c², so on both sides (the unit circle turned about the y axis)
   cube,              ///< 3-D: uniform in the cube [-1, 1)³ (lines `x y z`)
   sphere,            ///< 3-D: on the unit sphere, rounded (lines `x y z`)
   simple_polygon,    ///< a random simple polygon (space partitioning, or 2-opt untangling: `untangle`)
