@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # The whole test suite (what CI runs): the default build and an ASan+UBSan build.
-# Long randomized runs are behind a label: ctest --preset long.
+# Long randomized runs are behind a label: ctest --preset long, after `cmake --preset default`
+# and its build (that tree builds every test).
+# Each test is built and run in one tree (T2_TESTS, tests/CMakeLists.txt): the ASan tree runs the
+# unit tests, the default tree those that need the optimized build, and the few listed in both.
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/deps.sh
 scripts/ninja-trees.sh
-cmake --preset default
+cmake --preset default -DT2_TESTS=optimized
 cmake --build --preset default
 ctest --preset default
 cmake --preset asan
