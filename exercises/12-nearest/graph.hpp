@@ -1,19 +1,14 @@
 #pragma once
-// Exercise 12: the inputs and the oracle both test files use (part of the tests, not of your
-// solution). The graph E of a set of sites is built by brute force, independently of the
+// Exercise 12: the inputs both test files use (part of the tests, not of your solution). The graph E of a set of sites is built by brute force, independently of the
 // library's triangulations: a triangle of one side is Delaunay when no site of the side is
 // strictly inside its circle (exact t2::in_circle), and E holds the edges of those triangles
 // (O(n⁴): small sets only). A product grid {x_i} × {y_j} has its Delaunay edges known by
 // construction: each cell is a rectangle, whose four corners are cocircular, so its sides and
-// both diagonals hold every Delaunay edge. The oracle is brute force over all sites with the exact
-// t2::compare_distance.
+// both diagonals hold every Delaunay edge.
 #include <cstdint>
-#include <optional>
 #include <random>
 #include <vector>
 
-#include <t2/kernel/distance.hpp>
-#include <t2/kernel/error.hpp>
 #include <t2/kernel/incircle.hpp>
 #include <t2/kernel/orient.hpp>
 #include <t2/kernel/point.hpp>
@@ -69,42 +64,6 @@ inline void product_grid(std::mt19937_64& g, int m, double w, std::vector<Point>
       if (j + 1 < m) E.insert(E.end(), {at(i, j), at(i, j + 1)});
       if (i + 1 < m && j + 1 < m) E.insert(E.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j), at(i, j + 1)});
     }
-}
-
-/// Site i's nearest by brute force over all sites; nullopt when undefined. A site z of Ω is
-/// undefined exactly when no other direction is under 90° from z and both sides hold sites.
-inline std::optional<long> brute_nearest(const std::vector<Point>& P, long i) {
-  bool front = false, back = false;
-  long proper = -1;
-  for (long j = 0; j < long(P.size()); ++j) {
-    front |= P[j].w() > 0, back |= P[j].w() < 0;
-    if (P[j].w() != 0) proper = j;
-  }
-  long best = -1;
-  if (P[i].w() == 0 && front && back) {
-    // Only a direction under 90° from z, nearer than every proper site by the 90° convention
-    // (compare_distance against any proper site), settles it: the nearest is the best of them.
-    for (long j = 0; j < long(P.size()); ++j)
-      if (j != i && P[j].w() == 0 && t2::compare_distance(P[j], P[proper], P[i]) < 0 &&
-          (best < 0 || t2::compare_distance(P[j], P[best], P[i]) < 0))
-        best = j;
-    if (best < 0) return std::nullopt;
-    return best;
-  }
-  for (long j = 0; j < long(P.size()); ++j)  // never undefined here: one side, or i proper
-    if (j != i && (best < 0 || t2::compare_distance(P[j], P[best], P[i]) < 0)) best = j;
-  return best;
-}
-
-/// The whole answer by brute force; nullopt when some site's nearest is undefined.
-inline std::optional<std::vector<long>> brute(const std::vector<Point>& P) {
-  std::vector<long> r(P.size());
-  for (long i = 0; i < long(P.size()); ++i) {
-    const auto b = brute_nearest(P, i);
-    if (!b) return std::nullopt;
-    r[i] = *b;
-  }
-  return r;
 }
 
 }  // namespace ex12test

@@ -1,5 +1,5 @@
 #pragma once
-// Exercise 11: the oracle both test files use (part of the tests, not of your solution). It
+// Exercise 11: the hidden tests' oracle (instructors only). It
 // works in exact rationals on the drawn positions (x/w, y/w): the circumcentre U by Cramer's rule
 // on the two perpendicular bisectors, put on the sites' side when the T² orientation (the sign
 // of the drawn one times the sign of w³) is positive and on the other side when it is negative; the
