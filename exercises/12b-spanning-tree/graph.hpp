@@ -1,13 +1,12 @@
 #pragma once
-// Exercise 12b: the inputs and the oracle both test files use (part of the tests, not of your
+// Exercise 12b: the inputs and the check both test files use (part of the tests, not of your
 // solution). The graph E of a set of sites is built by brute force, independently of the
 // library's triangulations: a triangle of one side is Delaunay when no site of the side is
 // strictly inside its circle (exact t2::in_circle), and E holds the edges of those triangles
 // (O(n⁴): small sets only). A product grid {x_i} × {y_j} has its Delaunay edges known by
 // construction: each cell is a rectangle, whose four corners are cocircular, so its sides and
-// both diagonals hold every Delaunay edge. The oracle is Kruskal on all n(n − 1)/2 pairs sorted by
-// the exact t2::pair_before (`brute_tree`); an answer is right when it is a spanning tree whose
-// sorted weights equal the oracle's term by term (every minimum tree has the same sorted weights:
+// both diagonals hold every Delaunay edge. An answer is right when it is a spanning tree whose
+// sorted weights equal those of a minimum tree term by term (every minimum tree has the same sorted weights:
 // chapter 12, Theorem 1).
 #include <algorithm>
 #include <cstdint>
@@ -75,38 +74,6 @@ inline void product_grid(std::mt19937_64& g, int m, double w, std::vector<Point>
       if (j + 1 < m) E.insert(E.end(), {at(i, j), at(i, j + 1)});
       if (i + 1 < m && j + 1 < m) E.insert(E.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j), at(i, j + 1)});
     }
-}
-
-/// Kruskal on the pairs `cand` (flat), sorted by the exact t2::pair_before; a union–find of
-/// its own. With all pairs it is the brute-force oracle.
-inline std::vector<long> kruskal(const std::vector<Point>& P, std::vector<long> cand) {
-  std::vector<std::pair<long, long>> pairs;
-  for (std::size_t k = 0; k + 1 < cand.size(); k += 2) pairs.push_back({cand[k], cand[k + 1]});
-  std::sort(pairs.begin(), pairs.end(), [&](const auto& a, const auto& b) {
-    return t2::pair_before(P, std::uint32_t(a.first), std::uint32_t(a.second), std::uint32_t(b.first),
-                           std::uint32_t(b.second));
-  });
-  std::vector<long> parent(P.size());
-  std::iota(parent.begin(), parent.end(), 0L);
-  auto find = [&](long x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::vector<long> T;
-  for (const auto& [a, b] : pairs)
-    if (find(a) != find(b)) {
-      parent[find(a)] = find(b);
-      T.insert(T.end(), {a, b});
-    }
-  return T;
-}
-
-/// The oracle on all pairs: O(n² log n), small sets only.
-inline std::vector<long> brute_tree(const std::vector<Point>& P) {
-  std::vector<long> all;
-  for (long i = 0; i < long(P.size()); ++i)
-    for (long j = i + 1; j < long(P.size()); ++j) all.insert(all.end(), {i, j});
-  return kruskal(P, all);
 }
 
 /// "" when T is a spanning tree of P whose sorted weights equal those of `want`, else what is wrong.
