@@ -198,3 +198,25 @@ TEST(Subdivision, MergesEqualPointsOfPolygons) {
 }
 
 }  // namespace
+
+namespace {
+
+// A hand map (as in test_locate_cli.cpp): a front triangle, the region beyond its long edge up
+// to Ω, and a triangle from the front through Ω to the back; the walk from every vertex.
+TEST(Walk, HandMapAcrossOmegaFromEveryVertex) {
+  const std::vector<t2::Polygon> faces{
+      {Point::cartesian(0, 0), Point::cartesian(4, 0), Point::cartesian(0, 4)},
+      {Point::cartesian(0, 4), Point::cartesian(4, 0), Point(0, 1, 0), Point(0, 1, 1)},
+      {Point(1, -1, -1), Point(-1, 1, 2), Point(-1, -1, 1)}};
+  const Subdivision S(faces);
+  std::mt19937_64 rng(3);
+  const std::vector<Point> Q = queries(S, rng, 300);
+  for (Index q = 0; q < S.points().size(); ++q)
+    for (const Point& p : Q) {
+      const Location want = t2::locate_brute(S, p);
+      ASSERT_EQ(to_string(t2::walk(S, p, q)), to_string(want))
+          << "p = " << p.w() << " " << p.x() << " " << p.y() << " from " << q;
+    }
+}
+
+}  // namespace

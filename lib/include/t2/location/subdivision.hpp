@@ -14,8 +14,11 @@
 /// **What the constructor checks** (a violation throws `MapError` naming the face): every face
 /// is a simple polygon of T² (polygon.hpp's `is_simple`); no directed edge is given twice (two
 /// faces on the same side of an edge overlap); and at every vertex no face's corner holds the
-/// first edge of another face's corner (faces overlapping at a vertex). Faces that overlap
-/// without sharing a vertex are not detected (that would be the O(e²) segment test).
+/// first edge of another face's corner (faces overlapping at a vertex). Not detected (that
+/// would be the O(e²) segment test): faces that overlap without sharing a vertex, and a vertex
+/// of one face inside an edge of another (a T-junction), where `walk` and `locate_brute` may
+/// name the point differently (an edge of one face, a vertex of the other). The check of the
+/// corners costs O(d²) at a vertex of degree d.
 
 #include <cstddef>
 #include <cstdint>

@@ -1,0 +1,72 @@
+// t2 locate from the command line: a map with a face on Ω and one that crosses Ω, queries in
+// faces, on edges, on vertices, on Ω and on the back, both algorithms, and bad maps.
+#include "cli_testing.hpp"
+
+namespace t2::testing {
+namespace {
+
+class LocateCli : public CliTest {};
+
+// Face 0: a front triangle. Face 1: beyond its long edge, between the ray +x from (4, 0) and
+// the ray from (0, 4) towards Ω in direction (1, 1) (two vertices on Ω). Face 2:
+// the triangle [1,−1,−1], [−1,1,2], [−1,−1,1], from the front through Ω (directions (−2β, γ))
+// to the back. Edge (4,0) → (0,4) is shared by faces 0 and 1.
+constexpr const char* kMap =
+    "polygon\n 0 0\n 4 0\n 0 4\nend\n"
+    "polygon\n 0 4\n 4 0\n 0 1 0\n 0 1 1\nend\n"
+    "polygon\n 1 -1 -1\n -1 1 2\n -1 -1 1\nend\n";
+
+TEST_F(LocateCli, FacesEdgesVerticesOmegaAndTheBack) {
+  write("map.t2", kMap);
+  write("q.t2",
+        "1 1\n"        // face 0
+        "3 3\n"        // face 1
+        "2 0\n"        // on edge 0 of face 0
+        "4 0\n"        // vertex 1 of faces 0 and 1: the least face
+        "2 2\n"        // the shared edge: face 0's edge 1
+        "0 2 1\n"      // Ω, inside face 1's edge along Ω
+        "0 -1 1\n"     // Ω, inside face 2
+        "1 -1 -1\n"    // vertex 0 of face 2
+        "-1 0 0\n"     // the back origin: outside
+        "0 1 -1\n"     // Ω, outside
+        "0 -1 0\n");   // Ω: u + v, inside face 2's edge v → u
+  const std::string want =
+      "face 0\nface 1\nedge 0 0\nvertex 0 1\nedge 0 1\nedge 1 2\nface 2\nvertex 2 0\noutside\noutside\nedge 2 2\n";
+  for (const char* a : {"walk", "brute"}) {
+    const Result r = t2(std::string("locate map.t2 q.t2 --algorithm ") + a);
+    EXPECT_EQ(r.status, 0) << a << r.err;
+    EXPECT_EQ(r.out, want) << a;
+  }
+  const Result r = t2("locate map.t2 q.t2 --svg out.svg");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(has(slurp(dir_ / "out.svg"), "<svg"));
+}
+
+TEST_F(LocateCli, BadMapsExitTwoWithTheLineOfTheFace) {
+  write("q.t2", "1 1\n");
+  // Face 1 written clockwise: its edges repeat face 0's in the same direction.
+  write("cw.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\n\npolygon\n 0 4\n 0 0\n 4 0\nend\n");
+  Result r = t2("locate cw.t2 q.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "cw.t2:7:")) << r.err;
+  write("bow.t2", "polygon\n 0 0\n 4 4\n 4 0\n 0 4\nend\n");  // not simple
+  r = t2("locate bow.t2 q.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "bow.t2:1:")) << r.err;
+  write("over.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\npolygon\n 0 0\n 4 1\n 1 4\nend\n");  // overlap at (0, 0)
+  r = t2("locate over.t2 q.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "over.t2:6:")) << r.err;
+  write("none.t2", "1 1\n");
+  r = t2("locate none.t2 q.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "none.t2:1:")) << r.err;
+  write("map.t2", kMap);
+  write("badq.t2", "1 1 1 1\n");
+  r = t2("locate map.t2 badq.t2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "badq.t2:1:")) << r.err;
+}
+
+}  // namespace
+}  // namespace t2::testing
