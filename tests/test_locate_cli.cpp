@@ -44,28 +44,24 @@ TEST_F(LocateCli, FacesEdgesVerticesOmegaAndTheBack) {
 
 TEST_F(LocateCli, BadMapsExitTwoWithTheLineOfTheFace) {
   write("q.t2", "1 1\n");
-  // Face 1 written clockwise: its edges repeat face 0's in the same direction.
-  write("cw.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\n\npolygon\n 0 4\n 0 0\n 4 0\nend\n");
-  Result r = t2("locate cw.t2 q.t2");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.err, "cw.t2:7:")) << r.err;
-  write("bow.t2", "polygon\n 0 0\n 4 4\n 4 0\n 0 4\nend\n");  // not simple
-  r = t2("locate bow.t2 q.t2");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.err, "bow.t2:1:")) << r.err;
-  write("over.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\npolygon\n 0 0\n 4 1\n 1 4\nend\n");  // overlap at (0, 0)
-  r = t2("locate over.t2 q.t2");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.err, "over.t2:6:")) << r.err;
-  write("none.t2", "1 1\n");
-  r = t2("locate none.t2 q.t2");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.err, "none.t2:1:")) << r.err;
   write("map.t2", kMap);
-  write("badq.t2", "1 1 1 1\n");
-  r = t2("locate map.t2 badq.t2");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.err, "badq.t2:1:")) << r.err;
+  // Each case: a file, its text, the command's arguments, and the file:line the error names.
+  const struct {
+    const char *name, *text, *args, *where;
+  } cases[] = {
+      // face 1 written clockwise: its edges repeat face 0's in the same direction
+      {"cw.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\n\npolygon\n 0 4\n 0 0\n 4 0\nend\n", "cw.t2 q.t2", "cw.t2:7:"},
+      {"bow.t2", "polygon\n 0 0\n 4 4\n 4 0\n 0 4\nend\n", "bow.t2 q.t2", "bow.t2:1:"},  // not simple
+      // two faces whose corners overlap at (0, 0)
+      {"over.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\npolygon\n 0 0\n 4 1\n 1 4\nend\n", "over.t2 q.t2", "over.t2:6:"},
+      {"none.t2", "1 1\n", "none.t2 q.t2", "none.t2:1:"},             // no face
+      {"badq.t2", "1 1 1 1\n", "map.t2 badq.t2", "badq.t2:1:"}};   // a bad query
+  for (const auto& c : cases) {
+    write(c.name, c.text);
+    const Result r = t2(std::string("locate ") + c.args);
+    EXPECT_EQ(r.status, 2) << c.name;
+    EXPECT_TRUE(has(r.err, c.where)) << c.name << ": " << r.err;
+  }
 }
 
 }  // namespace

@@ -6,9 +6,9 @@
 namespace t2cli::algorithms {
 namespace {
 
-T2_PEER({"cgal", {"hull", "delaunay", "hull3d", "intersect"},
-         "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay), convex_hull_3 (hull3d), "
-         "compute_intersection_points<Epeck> (intersect)",
+T2_PEER({"cgal", {"hull", "delaunay", "hull3d", "intersect", "locate"},
+         "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay; its locate from the last "
+         "face, for locate), convex_hull_3 (hull3d), compute_intersection_points<Epeck> (intersect)",
          true});
 T2_PEER({"qhull", {"hull", "hull3d"}, "qhull (libqhull_r, default options: merges nearly coplanar facets)", false});
 T2_PEER({"raw", {"hull", "delaunay"},
