@@ -248,16 +248,16 @@ Run intersect_peer(const std::string& impl, const std::vector<t2::Segment>& S) {
 }
 
 // CGAL's Delaunay_triangulation_2<Epick> of the points, then its locate of the queries of t2's
-// walk (locate_queries, random order), each from the face of the answer before: the number of
-// queries in the closed hull, as t2's walk counts them.
+// walk (locate_queries: random order for cgal, spatial order for cgal-sorted), each from the
+// face of the answer before: the number of queries in the closed hull, as t2's walk counts them.
 Run locate_peer(const std::string& impl, const std::vector<t2::Point>& P) {
-  if (impl != "cgal") return nullptr;
+  if (impl != "cgal" && impl != "cgal-sorted") return nullptr;
   using Dt = CGAL::Delaunay_triangulation_2<Epick>;
   auto dt = std::make_shared<Dt>();
   const auto C = t2bench::to_cgal(P);
   dt->insert(C.begin(), C.end());
   auto Q = std::make_shared<std::vector<Epick::Point_2>>();
-  for (const auto& q : t2cli::algorithms::locate_queries(P, false)) Q->emplace_back(q.x() / q.w(), q.y() / q.w());
+  for (const auto& q : t2cli::algorithms::locate_queries(P, impl == "cgal-sorted")) Q->emplace_back(q.x() / q.w(), q.y() / q.w());
   return [dt, Q] {
     std::size_t inside = 0;
     Dt::Face_handle hint;

@@ -69,7 +69,7 @@ T2_ALGORITHM({.name = "walk",
               .summary = "t2::walk: seed 000's Algorithm 15 on the Delaunay triangulation, queries in random order",
               .title = "point location by walking (Algorithm 15)",
               .time = [](BenchInput& in) -> Timed { return walk_run(in, false); },
-              .peers = {"cgal", "walk-sorted"}});
+              .peers = {"cgal", "walk-sorted", "cgal-sorted"}});
 
 T2_ALGORITHM({.name = "walk-sorted",
               .problem = "locate",
