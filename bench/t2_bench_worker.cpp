@@ -53,6 +53,7 @@ extern "C" {
 #include "t2/kernel/incircle.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "algorithms/answer.hpp"
+#include "algorithms/location.hpp"
 #include "algorithms/registry.hpp"
 #include "raw_kernel.hpp"
 
@@ -246,6 +247,30 @@ Run intersect_peer(const std::string& impl, const std::vector<t2::Segment>& S) {
   };
 }
 
+// CGAL's Delaunay_triangulation_2<Epick> of the points, then its locate of the queries of t2's
+// walk (locate_queries: random order for cgal, spatial order for cgal-sorted), each from the
+// face of the answer before: the number of queries in the closed hull, as t2's walk counts them.
+Run locate_peer(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "cgal" && impl != "cgal-sorted") return nullptr;
+  using Dt = CGAL::Delaunay_triangulation_2<Epick>;
+  auto dt = std::make_shared<Dt>();
+  const auto C = t2bench::to_cgal(P);
+  dt->insert(C.begin(), C.end());
+  auto Q = std::make_shared<std::vector<Epick::Point_2>>();
+  for (const auto& q : t2cli::algorithms::locate_queries(P, impl == "cgal-sorted")) Q->emplace_back(q.x() / q.w(), q.y() / q.w());
+  return [dt, Q] {
+    std::size_t inside = 0;
+    Dt::Face_handle hint;
+    for (const auto& q : *Q) {
+      Dt::Locate_type lt;
+      int li = 0;
+      hint = dt->locate(q, lt, li, hint);
+      inside += lt != Dt::OUTSIDE_CONVEX_HULL && lt != Dt::OUTSIDE_AFFINE_HULL;
+    }
+    return inside;
+  };
+}
+
 // The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
 Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
   namespace reg = t2cli::algorithms;
@@ -257,6 +282,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "delaunay" ? delaunay_peer(impl, in.points)
           : problem == "hull3d"   ? hull3d_peer(impl, in.points3)
           : problem == "intersect" ? intersect_peer(impl, in.segments)
+          : problem == "locate"   ? locate_peer(impl, in.points)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;

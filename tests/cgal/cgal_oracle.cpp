@@ -90,6 +90,35 @@ std::vector<std::array<Triangulation::Index, 3>> delaunay_triangles(
   return out;
 }
 
+std::vector<DelaunayLocation> delaunay_locate(const std::vector<Point>& pts, const std::vector<Point>& queries) {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<Triangulation::Index, Epick>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+  using Dt = CGAL::Delaunay_triangulation_2<Epick, Tds>;
+  std::vector<std::pair<Epick::Point_2, Triangulation::Index>> in;
+  for (Triangulation::Index k = 0; k < pts.size(); ++k) in.emplace_back(Epick::Point_2(pts[k].x(), pts[k].y()), k);
+  Dt dt(in.begin(), in.end());
+  std::vector<DelaunayLocation> out;
+  for (const Point& q : queries) {
+    Dt::Locate_type lt;
+    int li = 0;
+    const auto f = dt.locate(Epick::Point_2(q.x() / q.w(), q.y() / q.w()), lt, li);
+    DelaunayLocation l;
+    if (lt == Dt::FACE) {
+      l.kind = 0;
+      for (int i = 0; i < 3; ++i) l.vertices.push_back(f->vertex(i)->info());
+    } else if (lt == Dt::EDGE) {
+      l.kind = 1;
+      l.vertices = {f->vertex(Dt::ccw(li))->info(), f->vertex(Dt::cw(li))->info()};
+    } else if (lt == Dt::VERTEX) {
+      l.kind = 2;
+      l.vertices = {f->vertex(li)->info()};
+    }
+    std::sort(l.vertices.begin(), l.vertices.end());
+    out.push_back(l);
+  }
+  return out;
+}
+
 std::vector<Triangle3> hull_3(const std::vector<Point3>& P) {
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
   std::vector<Epick::Point_3> in;

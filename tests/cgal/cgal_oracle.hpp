@@ -32,6 +32,20 @@ std::vector<std::vector<std::size_t>> layers_2(const std::vector<Point>& P);
 std::vector<std::array<Triangulation::Index, 3>> delaunay_triangles(
     const std::vector<Point>& pts, const std::vector<std::pair<Triangulation::Index, Triangulation::Index>>& duplicates);
 
+/// What CGAL's `Delaunay_triangulation_2::locate` (Epick, front points with w = 1) answers
+/// for one query: the kind (0 in a face, 1 on an edge, 2 on a vertex, 3 outside the hull) and
+/// the input indices of the face's, edge's or vertex's vertices, sorted.
+struct DelaunayLocation {
+  int kind = 3;                                 ///< 0 face, 1 edge, 2 vertex, 3 outside
+  std::vector<Triangulation::Index> vertices;  ///< sorted input indices
+  /// Same kind and vertices.
+  friend bool operator==(const DelaunayLocation&, const DelaunayLocation&) = default;
+};
+
+/// CGAL's Delaunay triangulation of distinct front points `pts` (w = 1) and its `locate` of
+/// each query (Cartesian x/w, y/w).
+std::vector<DelaunayLocation> delaunay_locate(const std::vector<Point>& pts, const std::vector<Point>& queries);
+
 /// CGAL::convex_hull_3 (Epick, into a Surface_mesh) of distinct points: its triangles as input
 /// indices, each rotated to start at its smallest index, sorted. Throws std::runtime_error if a
 /// face is not a triangle.

@@ -1,0 +1,67 @@
+#pragma once
+/// @file walk.hpp
+/// @brief Point location in a subdivision of T² (subdivision.hpp): the walk of seed 000's
+/// Algorithm 15 along the segment from a vertex q to the query p, exact, and the brute-force
+/// test of every face that the tests use as its oracle.
+///
+/// **The walk.** Two states. *At a vertex v* of the segment qp (first v = q): if v = p, done; if
+/// p lies on an edge at v, done; if the segment runs along an edge v → w with w before p, go
+/// to w; otherwise exactly one corner of a face at v holds the direction of p (`in_corner`), or
+/// none does and the segment leaves v into the complement, `outside`. *In a region R*, entered
+/// at a point X of the segment: among the edges of R (a face's own, or every boundary edge for
+/// `outside`) find the first point Y of the segment after X where it meets one. None: p is
+/// inside R. Y = p: p is on that edge or vertex. Y a vertex: go to it. Otherwise cross the edge
+/// into the region on its other side. Nothing assumes that a face is convex or on one side of
+/// T²: crossing Ω is one more crossing of an edge, and the complement is a region like the
+/// faces, so the walk goes on after it leaves the map.
+///
+/// **Exactness.** Only signs are used. The segment qp and the arc ab meet when the signs of
+/// Δ(q, p, a), Δ(q, p, b) differ (or one is 0), those of Δ(a, b, q), Δ(a, b, p) differ (or
+/// one is 0), and Δ(a, b, q) agrees with Δ(q, p, b) — on the sphere two arcs can each straddle
+/// the other's great circle and yet cross it at antipodal points, and this last sign tells the
+/// two apart. The meeting point is Y = α q + β p with (α, β) = s·(D_p, −D_q), D_x = det(a, b, x)
+/// and s = ±1 making α, β ≥ 0, so two meeting points compare along the segment by the sign of
+/// β₁α₂ − β₂α₁ = s₁s₂ (D_q² D_p¹ − D_q¹ D_p²), one degree-6 polynomial (sign_of_poly).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "t2/location/subdivision.hpp"
+
+namespace t2 {
+
+/// Where a point lies in a subdivision. For a point on an edge or a vertex, the face of least
+/// index that has it (the output of `t2 locate`).
+struct Location {
+  /// What the point hits.
+  enum class Kind {
+    face,    ///< strictly inside face `face`
+    edge,    ///< inside the edge from vertex k of `face` to vertex k + 1
+    vertex,  ///< equal to vertex k of `face`
+    outside  ///< in the complement of the closed faces
+  } kind = Kind::outside;                 ///< what the point hits
+  Subdivision::Index face = Subdivision::outside;  ///< the face (not for `outside`)
+  Subdivision::Index k = 0;               ///< the slot of the edge or vertex in `face`
+  /// Same kind, face and slot.
+  friend bool operator==(const Location&, const Location&) = default;
+};
+
+/// The answer written as `t2 locate` prints it: `face F`, `edge F K`, `vertex F K` or `outside`.
+std::string to_string(const Location& l);
+
+/// Locates p by walking from vertex q (an index into S.points()) along the segment qp; when
+/// p = ¬q it starts from a neighbour of q instead. Appends to `crossed`, when given, each region
+/// the walk passes through, in order (`Subdivision::outside` for the complement). Exact. The
+/// segment meets each edge and each vertex at most once (both are straight), so the walk enters
+/// at most e + v + 1 regions; a convex face is entered at most once, so on a map of convex
+/// faces the walk costs O(e) (plus the boundary edges for each pass through `outside`); a
+/// non-convex face can be entered once per edge it has, O(e²) in the worst case.
+Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
+              std::vector<Subdivision::Index>* crossed = nullptr);
+
+/// Locates p by testing every face in order with the exact point-in-polygon test of T²
+/// (point_in_polygon.hpp's `locate`, seed 000 Algorithm 2): the oracle of the walk. O(e).
+Location locate_brute(const Subdivision& S, const Point& p);
+
+}  // namespace t2

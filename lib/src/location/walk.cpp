@@ -1,0 +1,177 @@
+// The walk of seed 000's Algorithm 15 and the brute-force location (walk.hpp).
+#include "t2/location/walk.hpp"
+
+#include <fmt/format.h>
+
+#include "t2/kernel/filter.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/point_in_polygon.hpp"
+#include "t2/kernel/segment.hpp"
+
+namespace t2 {
+
+using Index = Subdivision::Index;
+
+std::string to_string(const Location& l) {
+  switch (l.kind) {
+    case Location::Kind::face: return fmt::format("face {}", l.face);
+    case Location::Kind::edge: return fmt::format("edge {} {}", l.face, l.k);
+    case Location::Kind::vertex: return fmt::format("vertex {} {}", l.face, l.k);
+    case Location::Kind::outside: break;
+  }
+  return "outside";
+}
+
+namespace {
+
+// The answers with the face of least index (walk.hpp's Location).
+Location at_vertex(const Subdivision& S, Index v) {
+  Location l{Location::Kind::vertex, Subdivision::outside, 0};
+  for (const auto& c : S.corners(v))
+    if (c.face < l.face) l.face = c.face, l.k = c.k;
+  return l;
+}
+Location at_edge(const Subdivision& S, Index h) {
+  const Index t = S.twin(h);
+  if (t != Subdivision::none && S.face(t) < S.face(h)) h = t;
+  return {Location::Kind::edge, S.face(h), S.slot(h)};
+}
+
+// A point Y of the segment qp, given by a line a ∨ b through it that is not q ∨ p: Y is
+// (a ∨ b) ∧ (q ∨ p) = α q + β p with (α, β) = s·(D_p, −D_q), D_x = det(a, b, x), α, β ≥ 0.
+struct Mark {
+  const Point* a;
+  const Point* b;
+  int s;  // the sign s
+};
+Mark mark(const Point& a, const Point& b, const Point& q, const Point& p) {
+  const int dp = orient(a, b, p);
+  return {&a, &b, dp != 0 ? dp : -int(orient(a, b, q))};
+}
+
+//> walk-order
+// The sign of position(y) − position(x) along the segment (walk.hpp: s₁s₂ (D_q² D_p¹ − D_q¹ D_p²)
+// with x first, negated so that POSITIVE means y comes after x).
+int after(const Mark& x, const Mark& y, const Point& q, const Point& p) {
+  const Sign e = sign_of_poly(
+      [](const auto& a1, const auto& b1, const auto& a2, const auto& b2, const auto& u, const auto& v) {
+        const auto det = [](const auto& a, const auto& b, const auto& c) {
+          return a.w * (b.x * c.y - b.y * c.x) - a.x * (b.w * c.y - b.y * c.w) + a.y * (b.w * c.x - b.x * c.w);
+        };
+        return det(a2, b2, u) * det(a1, b1, v) - det(a1, b1, u) * det(a2, b2, v);
+      },
+      *x.a, *x.b, *y.a, *y.b, q, p);
+  return -x.s * y.s * int(e);
+}
+//< walk-order
+
+// Does the segment qp meet the closed edge a b? (walk.hpp: the sign rule, antipodal crossings
+// excluded.) Collinear edges are not counted: the walk meets their ends through other edges.
+//> walk-meet
+bool meets(const Point& a, const Point& b, const Point& q, const Point& p) {
+  const int da = orient(q, p, a), db = orient(q, p, b);
+  if (da == db) return false;  // both 0 (collinear) or both on one side
+  const int s = db != 0 ? db : -da;
+  const int dq = orient(a, b, q), dp = orient(a, b, p);
+  return (dq == 0 || dq == s) && (dp == 0 || dp == -s);
+}
+//< walk-meet
+
+}  // namespace
+
+Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>* crossed) {
+  const auto& P = S.points();
+  if (p == antipode(P[qv])) qv = S.dest(S.first(S.corners(qv)[0].face) + S.corners(qv)[0].k);
+  const Point& q = P[qv];
+  if (p == q) return at_vertex(S, qv);
+  const Point r = detail::off_line_point(q, p);
+  Index v = qv;
+  for (;;) {
+    // At vertex v of the segment, v != p.
+    const Point& V = P[v];
+    Index region = Subdivision::outside, along = Subdivision::none;
+    bool moved = false;
+    for (const auto& c : S.corners(v)) {
+      const Index h = S.first(c.face) + c.k;
+      for (const Index e : {h, S.prev(h)}) {
+        const Index x = e == h ? S.dest(e) : S.org(e);
+        if (on_segment(V, P[x], p)) return P[x] == p ? at_vertex(S, x) : at_edge(S, e);
+        if (on_segment(V, p, P[x])) along = x;
+      }
+      if (region == Subdivision::outside && in_corner(P[S.org(S.prev(h))], V, P[S.dest(h)], p)) region = c.face;
+    }
+    if (along != Subdivision::none) {
+      v = along;
+      moved = true;
+    }
+    if (moved) continue;
+    // In `region`, from V: the first point of the segment after V on one of its edges.
+    Mark here{&V, &r, 0};
+    here = mark(V, r, q, p);
+    Index entry = Subdivision::none;
+    for (;;) {
+      if (crossed) crossed->push_back(region);
+      Index best = Subdivision::none;
+      Mark bm{};
+      const auto visit = [&](Index h) {
+        if (h == entry) return;
+        const Point &a = P[S.org(h)], &b = P[S.dest(h)];
+        if (!meets(a, b, q, p)) return;
+        const Mark m = mark(a, b, q, p);
+        if (after(here, m, q, p) <= 0) return;
+        if (best == Subdivision::none || after(m, bm, q, p) > 0) best = h, bm = m;
+      };
+      if (region == Subdivision::outside) {
+        for (const Index h : S.boundary()) visit(h);
+      } else {
+        for (Index h = S.first(region); h < S.first(region) + S.size(region); ++h) visit(h);
+      }
+      if (best == Subdivision::none)
+        return region == Subdivision::outside ? Location{} : Location{Location::Kind::face, region, 0};
+      const Index a = S.org(best), b = S.dest(best);
+      const bool at_p = orient(P[a], P[b], p) == ZERO;
+      if (orient(q, p, P[a]) == ZERO) {
+        if (at_p) return at_vertex(S, a);
+        v = a;
+        break;
+      }
+      if (orient(q, p, P[b]) == ZERO) {
+        if (at_p) return at_vertex(S, b);
+        v = b;
+        break;
+      }
+      if (at_p) return at_edge(S, best);
+      // Cross the edge.
+      if (region == Subdivision::outside) {
+        region = S.face(best);
+        entry = best;
+      } else if (S.twin(best) == Subdivision::none) {
+        region = Subdivision::outside;
+        entry = best;
+      } else {
+        entry = S.twin(best);
+        region = S.face(entry);
+      }
+      here = bm;
+    }
+  }
+}
+
+Location locate_brute(const Subdivision& S, const Point& p) {
+  const auto& P = S.points();
+  for (Index f = 0; f < S.faces(); ++f) {
+    Polygon F;
+    for (Index h = S.first(f); h < S.first(f) + S.size(f); ++h) F.push_back(P[S.org(h)]);
+    const Sign s = locate(F, p);
+    if (s == POSITIVE) return {Location::Kind::face, f, 0};
+    if (s == ZERO) {
+      for (Index k = 0; k < F.size(); ++k)
+        if (F[k] == p) return {Location::Kind::vertex, f, k};
+      for (Index k = 0; k < F.size(); ++k)
+        if (on_segment(F[k], F[(k + 1) % F.size()], p)) return {Location::Kind::edge, f, k};
+    }
+  }
+  return {};
+}
+
+}  // namespace t2
