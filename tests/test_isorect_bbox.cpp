@@ -2,6 +2,8 @@
 // coordinates, against rational Cartesian oracles and membership oracles.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <variant>
 #include <vector>
 
@@ -376,6 +378,37 @@ TEST(BBox, Figure46FrontAndBackBoxesMeetAtInfinity) {
   const auto z = intersection(q1, q2);
   ASSERT_TRUE(std::holds_alternative<BBox>(z));
   EXPECT_EQ(to_string(std::get<BBox>(z)), "bbox(x in [1, 3]..[1, 7], y in [1, 0]..[0, 1], front)");
+}
+
+// Containment in a box of doubles is a predicate, so it is exact although the box's far end
+// a + Δ is a sum that doubles round. Oracle: the Cartesian interval [a, a + Δ] in rationals, for
+// the doubles next to the rounded end (one of which is just outside the exact interval whenever
+// the sum rounds). The rectangle of exercise 15b's large test that found it comes first.
+TEST(BBox, ContainsIsExactWhereTheFarEndRoundsInDoubles) {
+  std::mt19937_64 rng(20261128);
+  std::uniform_int_distribution<int> num(1, 30000), den(2, 9);
+  int rounded = 0, outside = 0;
+  for (int t = 0; t < 2000; ++t) {
+    const double ax = t == 0 ? 10799 : num(rng), ay = t == 0 ? 14347.0 / 7 : num(rng) / 7.0;
+    const double dx = t == 0 ? 3169.0 / 3 : num(rng) / double(den(rng)), dy = t == 0 ? 20343.0 / 3 : num(rng) / 3.0;
+    for (const double s : {1.0, -1.0}) {  // the front box and its back twin (a = [−1, −ax, −ay])
+      const BBox b(Point(s, s * ax, s * ay), T1(1, dx), T1(1, dy));
+      const Rational lo(ax), hi = Rational(ax) + Rational(dx), ylo(ay), yhi = Rational(ay) + Rational(dy);
+      const double end = ax + dx;  // what a + Δ gives in doubles
+      if (Rational(end) != hi) ++rounded;
+      for (const double x : {std::nextafter(end, -1e300), end, std::nextafter(end, 1e300)}) {
+        const bool in = lo <= Rational(x) && Rational(x) <= hi;
+        outside += !in;
+        const double y = ay;  // inside in y: the corner
+        ASSERT_LE(ylo, Rational(y));
+        ASSERT_LE(Rational(y), yhi);
+        ASSERT_EQ(contains(b, Point(s, s * x, s * y)), in) << "x = " << x << ", box " << to_string(b);
+        ASSERT_EQ(contains(b, Point(2 * s, 2 * s * x, 2 * s * y)), in) << "w = 2";
+      }
+    }
+  }
+  EXPECT_GT(rounded, 500);  // the case occurs: the sum rounds in most boxes
+  EXPECT_GT(outside, 500);
 }
 
 }  // namespace

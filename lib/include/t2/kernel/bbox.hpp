@@ -28,6 +28,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -122,9 +123,15 @@ std::optional<BasicSegment<T>> omega_part(const BasicBBox<T>& b) {
   return std::nullopt;
 }
 
-/// Is p in the closed box (its proper part, or its part on Ω)? Exact.
+/// Is p in the closed box (its proper part, or its part on Ω)? Exact: a box of doubles is
+/// compared in integers, since its far ends a + Δ are sums that doubles would round.
 template <class T>
 bool contains(const BasicBBox<T>& b, const BasicPoint<T>& p) {
+  if constexpr (std::is_same_v<T, double>) {
+    // The far ends a + Δ (xmax, or xmin for Δ < 0) are sums: in doubles they would be rounded,
+    // and a point just beyond the box counted in. The integers of the input doubles are exact.
+    if (p.w() != 0) return contains(ExactBBox(to_exact(b.a()), to_exact(b.dx()), to_exact(b.dy())), to_exact(p));
+  }
   if (p.w() == 0) {
     const auto o = omega_part(b);
     return o && contains(*o, p);
