@@ -21,7 +21,7 @@
 #include <t2/kernel/incircle.hpp>
 #include <t2/kernel/orient.hpp>
 #include <t2/kernel/point.hpp>
-#include <t2/proximity/pair_distance.hpp>
+#include <t2/kernel/pair_distance.hpp>
 
 namespace ex12btest {
 

@@ -13,7 +13,7 @@
 #include <utility>
 
 #include <t2/kernel/point.hpp>
-#include <t2/proximity/pair_distance.hpp>
+#include <t2/kernel/pair_distance.hpp>
 
 #include "graph.hpp"
 #include "tree.hpp"

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "t2/kernel/error.hpp"
-#include "t2/proximity/pair_distance.hpp"
+#include "t2/kernel/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
 
 namespace t2 {

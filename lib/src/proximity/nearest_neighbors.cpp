@@ -7,7 +7,7 @@
 #include "t2/kernel/distance.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/filter.hpp"
-#include "t2/proximity/pair_distance.hpp"
+#include "t2/kernel/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
 
 namespace t2 {

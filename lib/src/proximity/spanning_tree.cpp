@@ -5,7 +5,7 @@
 #include <bit>
 
 #include "t2/kernel/distance.hpp"
-#include "t2/proximity/pair_distance.hpp"
+#include "t2/kernel/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
 #include "t2/proximity/union_find.hpp"
 #include "t2/triangulation/spatial_sort.hpp"

@@ -3,7 +3,7 @@
 // hidden input.
 #include "tree.hpp"
 
-#include <t2/proximity/pair_distance.hpp>
+#include <t2/kernel/pair_distance.hpp>
 
 namespace ex12b {
 

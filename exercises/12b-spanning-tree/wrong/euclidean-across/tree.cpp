@@ -8,7 +8,7 @@
 #include <numeric>
 #include <utility>
 
-#include <t2/proximity/pair_distance.hpp>
+#include <t2/kernel/pair_distance.hpp>
 
 namespace ex12b {
 

@@ -10,7 +10,7 @@
 
 #include <t2/kernel/lexicographic.hpp>
 #include <t2/kernel/orient.hpp>
-#include <t2/proximity/pair_distance.hpp>
+#include <t2/kernel/pair_distance.hpp>
 
 namespace ex12b {
 
