@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <optional>
 #include <random>
 #include <set>
 #include <vector>
@@ -96,13 +97,22 @@ std::vector<Point> queries(const Subdivision& S, std::mt19937_64& rng, int rando
   return Q;
 }
 
+// Each query walked from a random vertex, and from the last query found strictly inside a face
+// (the second overload of walk, as a run of queries uses it).
 void expect_walk_matches_brute(const Subdivision& S, const std::vector<Point>& Q, std::mt19937_64& rng,
                                std::set<Location::Kind>* seen = nullptr) {
+  std::optional<std::pair<Point, Index>> inside;
   for (const Point& p : Q) {
     const Location want = t2::locate_brute(S, p);
     const Index q = Index(rng() % S.points().size());
     const Location got = t2::walk(S, p, q);
     ASSERT_EQ(to_string(got), to_string(want)) << "p = " << p.w() << " " << p.x() << " " << p.y() << " from " << q;
+    if (inside) {
+      const auto& [from, face] = *inside;
+      ASSERT_EQ(to_string(t2::walk(S, p, from, face)), to_string(want))
+          << "p = " << p.w() << " " << p.x() << " " << p.y() << " from " << from.w() << " " << from.x() << " " << from.y();
+    }
+    if (want.kind == Location::Kind::face) inside = {p, want.face};
     if (seen) seen->insert(got.kind);
   }
 }

@@ -1,6 +1,8 @@
 // The walk of seed 000's Algorithm 15 and the brute-force location (walk.hpp).
 #include "t2/location/walk.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "t2/kernel/filter.hpp"
@@ -77,20 +79,109 @@ bool meets(const Point& a, const Point& b, const Point& q, const Point& p) {
 }
 //< walk-meet
 
-}  // namespace
-
-Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>* crossed) {
+// The walk's second state: in `region`, entered at the point `here` of the segment qp (through
+// the half-edge `entry` of the region, or from a vertex or from a point inside it: none), on to
+// the first point of the segment after `here` on an edge of the region, crossing edges while
+// they are crossed in their interiors. Returns the answer, or none after setting v to the
+// vertex of the segment that the walk reached (the caller goes on in the first state).
+std::optional<Location> through_regions(const Subdivision& S, const Point& q, const Point& p, Index region,
+                                        Index entry, Mark here, Index& v, std::vector<Index>* crossed) {
   const auto& P = S.points();
-  if (p == antipode(P[qv])) qv = S.dest(S.first(S.corners(qv)[0].face) + S.corners(qv)[0].k);
-  const Point& q = P[qv];
-  if (p == q) return at_vertex(S, qv);
-  const Point r = detail::off_line_point(q, p);
-  Index v = qv;
   for (;;) {
-    // At vertex v of the segment, v != p.
+    if (crossed) crossed->push_back(region);
+    //> walk-triangle
+    // A convex triangle (Δ(a, b, c) > 0: the small triangle of its three vertices, not its
+    // complement) is left by the edge u → w whose ends the line qp separates, u on its right
+    // and w on its left: entered through the interior of its edge ab, the segment leaves by bc
+    // when c is on a's side of the line, by ca when on b's side, through c when on the line;
+    // started at a point inside it, by the edge where the sides change from right to left.
+    // Then p, after the point where the segment came in, is inside when it is on the inner side
+    // of that edge. Two to four orientations instead of the general scan of every edge (the
+    // plane's straight walk, which holds on the sphere because the segment is shorter than a
+    // half turn: after it leaves by an edge, it stays on the outer side of that edge's line).
+    if (region != Subdivision::outside && S.size(region) == 3) {
+      const Index ab = entry != Subdivision::none ? entry : S.first(region), bc = S.next(ab), ca = S.next(bc);
+      const Point &a = P[S.org(ab)], &b = P[S.org(bc)], &c = P[S.org(ca)];
+      Index out = Subdivision::none;
+      if (orient(a, b, c) == POSITIVE) {
+        const int sc = orient(q, p, c);
+        if (entry != Subdivision::none && sc == 0) {  // the segment runs into c
+          if (p == c) return at_vertex(S, S.org(ca));
+          if (orient(b, c, p) == POSITIVE) return Location{Location::Kind::face, region, 0};
+          v = S.org(ca);
+          return std::nullopt;
+        }
+        const int sa = orient(q, p, a);
+        if (entry != Subdivision::none) {
+          out = sc == sa ? bc : ca;
+        } else if (const int sb = orient(q, p, b); sa != 0 && sb != 0 && sc != 0) {
+          out = sa < 0 && sb > 0 ? ab : sb < 0 && sc > 0 ? bc : ca;
+        }  // else the line qp passes through a vertex: the general step below
+      }
+      if (out != Subdivision::none) {
+        const Point &u = P[S.org(out)], &w = P[S.dest(out)];
+        const int o = orient(u, w, p);
+        if (o > 0) return Location{Location::Kind::face, region, 0};
+        if (o == 0) return at_edge(S, out);
+        here = Mark{&u, &w, o};  // mark(u, w, q, p): D_p = o is not 0
+        entry = S.twin(out) == Subdivision::none ? out : S.twin(out);
+        region = S.twin(out) == Subdivision::none ? Subdivision::outside : S.face(entry);
+        continue;
+      }
+    }
+    //< walk-triangle
+    Index best = Subdivision::none;
+    Mark bm{};
+    const auto visit = [&](Index h) {
+      if (h == entry) return;
+      const Point &a = P[S.org(h)], &b = P[S.dest(h)];
+      if (!meets(a, b, q, p)) return;
+      const Mark m = mark(a, b, q, p);
+      if (after(here, m, q, p) <= 0) return;
+      if (best == Subdivision::none || after(m, bm, q, p) > 0) best = h, bm = m;
+    };
+    if (region == Subdivision::outside) {
+      for (const Index h : S.boundary()) visit(h);
+    } else {
+      for (Index h = S.first(region); h < S.first(region) + S.size(region); ++h) visit(h);
+    }
+    if (best == Subdivision::none)
+      return region == Subdivision::outside ? Location{} : Location{Location::Kind::face, region, 0};
+    const Index a = S.org(best), b = S.dest(best);
+    const bool at_p = orient(P[a], P[b], p) == ZERO;
+    if (orient(q, p, P[a]) == ZERO) {
+      if (at_p) return at_vertex(S, a);
+      v = a;
+      return std::nullopt;
+    }
+    if (orient(q, p, P[b]) == ZERO) {
+      if (at_p) return at_vertex(S, b);
+      v = b;
+      return std::nullopt;
+    }
+    if (at_p) return at_edge(S, best);
+    // Cross the edge.
+    if (region == Subdivision::outside) {
+      region = S.face(best);
+      entry = best;
+    } else if (S.twin(best) == Subdivision::none) {
+      region = Subdivision::outside;
+      entry = best;
+    } else {
+      entry = S.twin(best);
+      region = S.face(entry);
+    }
+    here = bm;
+  }
+}
+
+// The walk's first state, from vertex v of the segment qp (v != p), alternating with the second.
+Location from_vertex(const Subdivision& S, const Point& q, const Point& p, Index v, std::vector<Index>* crossed) {
+  const auto& P = S.points();
+  const Point r = detail::off_line_point(q, p);
+  for (;;) {
     const Point& V = P[v];
     Index region = Subdivision::outside, along = Subdivision::none;
-    bool moved = false;
     for (const auto& c : S.corners(v)) {
       const Index h = S.first(c.face) + c.k;
       for (const Index e : {h, S.prev(h)}) {
@@ -102,59 +193,30 @@ Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>
     }
     if (along != Subdivision::none) {
       v = along;
-      moved = true;
+      continue;
     }
-    if (moved) continue;
     // In `region`, from V: the first point of the segment after V on one of its edges.
-    Mark here{&V, &r, 0};
-    here = mark(V, r, q, p);
-    Index entry = Subdivision::none;
-    for (;;) {
-      if (crossed) crossed->push_back(region);
-      Index best = Subdivision::none;
-      Mark bm{};
-      const auto visit = [&](Index h) {
-        if (h == entry) return;
-        const Point &a = P[S.org(h)], &b = P[S.dest(h)];
-        if (!meets(a, b, q, p)) return;
-        const Mark m = mark(a, b, q, p);
-        if (after(here, m, q, p) <= 0) return;
-        if (best == Subdivision::none || after(m, bm, q, p) > 0) best = h, bm = m;
-      };
-      if (region == Subdivision::outside) {
-        for (const Index h : S.boundary()) visit(h);
-      } else {
-        for (Index h = S.first(region); h < S.first(region) + S.size(region); ++h) visit(h);
-      }
-      if (best == Subdivision::none)
-        return region == Subdivision::outside ? Location{} : Location{Location::Kind::face, region, 0};
-      const Index a = S.org(best), b = S.dest(best);
-      const bool at_p = orient(P[a], P[b], p) == ZERO;
-      if (orient(q, p, P[a]) == ZERO) {
-        if (at_p) return at_vertex(S, a);
-        v = a;
-        break;
-      }
-      if (orient(q, p, P[b]) == ZERO) {
-        if (at_p) return at_vertex(S, b);
-        v = b;
-        break;
-      }
-      if (at_p) return at_edge(S, best);
-      // Cross the edge.
-      if (region == Subdivision::outside) {
-        region = S.face(best);
-        entry = best;
-      } else if (S.twin(best) == Subdivision::none) {
-        region = Subdivision::outside;
-        entry = best;
-      } else {
-        entry = S.twin(best);
-        region = S.face(entry);
-      }
-      here = bm;
-    }
+    if (auto l = through_regions(S, q, p, region, Subdivision::none, mark(V, r, q, p), v, crossed)) return *l;
   }
+}
+
+}  // namespace
+
+Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>* crossed) {
+  const auto& P = S.points();
+  if (p == antipode(P[qv])) qv = S.dest(S.first(S.corners(qv)[0].face) + S.corners(qv)[0].k);
+  const Point& q = P[qv];
+  if (p == q) return at_vertex(S, qv);
+  return from_vertex(S, q, p, qv, crossed);
+}
+
+Location walk(const Subdivision& S, const Point& p, const Point& from, Index face, std::vector<Index>* crossed) {
+  if (p == from) return {Location::Kind::face, face, 0};
+  if (p == antipode(from)) return walk(S, p, S.org(S.first(face)), crossed);
+  const Point r = detail::off_line_point(from, p);
+  Index v = Subdivision::none;
+  if (auto l = through_regions(S, from, p, face, Subdivision::none, mark(from, r, from, p), v, crossed)) return *l;
+  return from_vertex(S, from, p, v, crossed);
 }
 
 Location locate_brute(const Subdivision& S, const Point& p) {

@@ -1,7 +1,8 @@
 // Point location (chapter 14, t2/location/), timed by `t2 bench locate`: the walk of seed
 // 000's Algorithm 15 on the Delaunay triangulation of the input points, each query starting at
-// a vertex of the face where the one before ended. The triangulation and the queries are made
-// before the clock starts (the worker's peers get the same queries: locate_queries).
+// the last query found inside a face (before there is one, at a vertex of the last answer's
+// face). The triangulation and the queries are made before the clock starts (the worker's peers
+// get the same queries: locate_queries).
 #include "algorithms/location.hpp"
 
 #include <algorithm>
@@ -44,7 +45,7 @@ namespace {
 
 T2_PROBLEM({"locate", "queries in a face", Input::plane});
 
-// The timed run: every query walked, from a vertex of the last answer's face.
+// The timed run: every query walked, from the last query inside a face.
 Timed walk_run(BenchInput& in, bool sorted) {
   const t2::Triangulation T = t2::delaunay(in.points);
   std::vector<std::vector<t2::Subdivision::Index>> F;
@@ -54,11 +55,14 @@ Timed walk_run(BenchInput& in, bool sorted) {
   return [S, Q] {
     std::size_t inside = 0;
     t2::Subdivision::Index from = S->org(0);
+    const t2::Point* last = nullptr;  // the last query strictly inside a face, and that face
+    t2::Subdivision::Index face = 0;
     for (const auto& q : *Q) {
-      const t2::Location l = t2::walk(*S, q, from);
+      const t2::Location l = last ? t2::walk(*S, q, *last, face) : t2::walk(*S, q, from);
       if (l.kind == t2::Location::Kind::outside) continue;
       ++inside;
       from = S->org(S->first(l.face) + l.k);
+      if (l.kind == t2::Location::Kind::face) last = &q, face = l.face;
     }
     return inside;
   };

@@ -22,6 +22,13 @@
 /// two apart. The meeting point is Y = α q + β p with (α, β) = s·(D_p, −D_q), D_x = det(a, b, x)
 /// and s = ±1 making α, β ≥ 0, so two meeting points compare along the segment by the sign of
 /// β₁α₂ − β₂α₁ = s₁s₂ (D_q² D_p¹ − D_q¹ D_p²), one degree-6 polynomial (sign_of_poly).
+///
+/// **Triangles.** A convex triangle entered through the interior of an edge is left by one of
+/// its two other edges, told apart by the side of the line qp its third vertex is on, and p
+/// is inside when it is on the inner side of that edge: the plane's straight walk, two or three
+/// orientations a step (walk.cpp, `walk-triangle`), where the general step above tests every
+/// edge. It holds on the sphere because the segment is shorter than a half turn: after the
+/// point where it leaves, the segment stays on the outer side of that edge's line.
 
 #include <cstddef>
 #include <string>
@@ -58,6 +65,13 @@ std::string to_string(const Location& l);
 /// faces the walk costs O(e) (plus the boundary edges for each pass through `outside`); a
 /// non-convex face can be entered once per edge it has, O(e²) in the worst case.
 Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
+              std::vector<Subdivision::Index>* crossed = nullptr);
+
+/// Locates p by walking from the point `from`, which must be strictly inside face `face` (the
+/// last answer of a run of queries, say), along the segment to p; when p = ¬from it starts
+/// from a vertex of the face instead. The same walk without its first vertex, whose corners
+/// cost more predicates than a step across a triangle. Exact.
+Location walk(const Subdivision& S, const Point& p, const Point& from, Subdivision::Index face,
               std::vector<Subdivision::Index>* crossed = nullptr);
 
 /// Locates p by testing every face in order with the exact point-in-polygon test of T²
