@@ -7,6 +7,7 @@
 #include <t2/location/walk.hpp>
 #include <t2/t2.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -110,6 +111,31 @@ void t_junction() {
   std::cout << "\n";
 }
 
+// A non-convex face entered many times: a comb of m teeth, crossed by a segment through all of
+// them, from a vertex of a triangle beside it.
+void comb() {
+  std::cout << "== a comb\n";
+  //> comb-demo
+  const auto at = [](double x, double y) { return Point::cartesian(x, y); };
+  const int m = 6;
+  t2::Polygon comb{at(0, 0), at(2 * m - 1, 0)};
+  for (int i = m - 1; i >= 0; --i) {  // tooth i: x from 2i to 2i + 1, up to y = 2
+    comb.push_back(at(2 * i + 1, 2));
+    comb.push_back(at(2 * i, 2));
+    if (i > 0) comb.push_back(at(2 * i, 1)), comb.push_back(at(2 * i - 1, 1));
+  }
+  const Subdivision S(std::vector<t2::Polygon>{comb, {at(-3, 0), at(-1, 1.5), at(-3, 3)}});
+  std::vector<Index> crossed;
+  const Location l = t2::walk(S, at(2 * m + 1, 1.5), vertex(S, at(-1, 1.5)), &crossed);
+  const auto times = [&](Index r) { return std::count(crossed.begin(), crossed.end(), r); };
+  std::cout << t2::to_string(l) << ": the comb (" << comb.size() << " edges) entered "
+            << times(0) << " times, the complement (" << S.boundary().size() << " edges) "
+            << times(Subdivision::outside) << " times\n";
+  //< comb-demo
+  require(times(0) == m && times(Subdivision::outside) == m + 1, "the comb");
+  std::cout << "\n";
+}
+
 // Random queries on the front, the back and Ω, and points exactly inside edges, from every
 // start vertex: the walk against every face tested; and no point strictly inside two faces.
 void random_check() {
@@ -149,6 +175,7 @@ int main(int argc, char** argv) {
   walks();
   degenerate();
   t_junction();
+  comb();
   random_check();
   chapter14::figures(dir);
 }
