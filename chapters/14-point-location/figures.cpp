@@ -20,6 +20,19 @@ std::vector<t2::Polygon> fan_map() {
   return {{O, a, b}, {b, a, c}, {c, a, d}, {d, a, O}, {c, d, e}};
 }
 
+t2::Polygon comb(int m) {
+  const auto at = [](double x, double y) { return Point(8, x, y); };  // in eighths
+  t2::Polygon c{at(0, 0), at(2 * m - 1, 0)};
+  for (int i = m - 1; i >= 0; --i) {
+    c.push_back(at(2 * i + 1, 2));
+    c.push_back(at(2 * i, 2));
+    if (i > 0) c.push_back(at(2 * i, 1)), c.push_back(at(2 * i - 1, 1));
+  }
+  return c;
+}
+
+t2::Polygon comb_start() { return {Point(8, -3, 0), Point(8, -1, 1.5), Point(8, -3, 3)}; }
+
 namespace {
 
 const char* const kFill[] = {pal::blue, pal::green, pal::orange, pal::purple, pal::cyan};
@@ -75,6 +88,23 @@ void figures(const std::filesystem::path& dir) {
   out.save(walk_picture(Point(1, 0, 0), Point(-2, 4, 1)), "walk", pv, sv);
   // A degenerate walk: along the edge O a, through the vertex a, into F2.
   out.save(walk_picture(Point(1, 0, 0), Point(2, 5, 0)), "walk-vertex", pv, sv);
+  {  // A non-convex face entered once per tooth: the comb, and the walk across it.
+    dr::Figure f;
+    f.add(comb(6), dr::Style().color(pal::dark_grey).width(1.2).fill(pal::blue).fill_opacity(0.3));
+    f.add(comb_start(), dr::Style().color(pal::dark_grey).width(1.2).fill(pal::green).fill_opacity(0.3));
+    const Point q(8, -1, 1.5), p(8, 13, 1.5);
+    f.segment(q, p, dr::Style().color(pal::red).width(2).arrow());
+    f.add(q, dr::Style().color(pal::red).size(4).label("q").label_angle(-60));
+    f.add(p, dr::Style().color(pal::red).size(4).label("p").label_angle(-60));
+    dr::PlaneView wide;
+    wide.cx = 5.0 / 8;
+    wide.cy = 1.5 / 8;
+    wide.half_width = 9.0 / 8;
+    dr::SphereView near;
+    near.lat = 75;
+    near.lon = -90;
+    out.save(f, "comb", wide, near);
+  }
   std::cerr << out.summary() << "\n";
 }
 

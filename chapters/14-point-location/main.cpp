@@ -116,15 +116,10 @@ void t_junction() {
 void comb() {
   std::cout << "== a comb\n";
   //> comb-demo
-  const auto at = [](double x, double y) { return Point::cartesian(x, y); };
+  const auto at = [](double x, double y) { return Point(8, x, y); };  // in eighths
   const int m = 6;
-  t2::Polygon comb{at(0, 0), at(2 * m - 1, 0)};
-  for (int i = m - 1; i >= 0; --i) {  // tooth i: x from 2i to 2i + 1, up to y = 2
-    comb.push_back(at(2 * i + 1, 2));
-    comb.push_back(at(2 * i, 2));
-    if (i > 0) comb.push_back(at(2 * i, 1)), comb.push_back(at(2 * i - 1, 1));
-  }
-  const Subdivision S(std::vector<t2::Polygon>{comb, {at(-3, 0), at(-1, 1.5), at(-3, 3)}});
+  const t2::Polygon comb = chapter14::comb(m);  // tooth i: x from 2i to 2i + 1, up to y = 2
+  const Subdivision S(std::vector<t2::Polygon>{comb, chapter14::comb_start()});
   std::vector<Index> crossed;
   const Location l = t2::walk(S, at(2 * m + 1, 1.5), vertex(S, at(-1, 1.5)), &crossed);
   const auto times = [&](Index r) { return std::count(crossed.begin(), crossed.end(), r); };
