@@ -52,17 +52,19 @@ Mark mark(const Point& a, const Point& b, const Point& q, const Point& p) {
 }
 
 //> walk-order
-// The sign of position(y) − position(x) along the segment (walk.hpp: s₁s₂ (D_q² D_p¹ − D_q¹ D_p²)
-// with x first, negated so that POSITIVE means y comes after x).
+// The sign of position(y) − position(x) along the segment (walk.hpp:
+// s₁s₂ (D_q² D_p¹ − D_q¹ D_p²) with x first, negated so that POSITIVE means
+// y comes after x).
 int after(const Mark& x, const Mark& y, const Point& q, const Point& p) {
-  const Sign e = sign_of_poly(
-      [](const auto& a1, const auto& b1, const auto& a2, const auto& b2, const auto& u, const auto& v) {
-        const auto det = [](const auto& a, const auto& b, const auto& c) {
-          return a.w * (b.x * c.y - b.y * c.x) - a.x * (b.w * c.y - b.y * c.w) + a.y * (b.w * c.x - b.x * c.w);
-        };
-        return det(a2, b2, u) * det(a1, b1, v) - det(a1, b1, u) * det(a2, b2, v);
-      },
-      *x.a, *x.b, *y.a, *y.b, q, p);
+  const auto order = [](const auto& a1, const auto& b1, const auto& a2, const auto& b2,
+                        const auto& u, const auto& v) {
+    const auto det = [](const auto& a, const auto& b, const auto& c) {
+      return a.w * (b.x * c.y - b.y * c.x) - a.x * (b.w * c.y - b.y * c.w) +
+             a.y * (b.w * c.x - b.x * c.w);
+    };
+    return det(a2, b2, u) * det(a1, b1, v) - det(a1, b1, u) * det(a2, b2, v);
+  };
+  const Sign e = sign_of_poly(order, *x.a, *x.b, *y.a, *y.b, q, p);
   return -x.s * y.s * int(e);
 }
 //< walk-order

@@ -78,6 +78,7 @@ class Subdivision {
   std::size_t faces() const { return first_.size() - 1; }
   /// Number of vertices of face f.
   std::size_t size(Index f) const { return first_[f + 1] - first_[f]; }
+  //> half-edges
   /// The first half-edge of face f.
   Index first(Index f) const { return first_[f]; }
   /// The face to the left of half-edge h.
@@ -87,13 +88,18 @@ class Subdivision {
   /// The origin vertex of h.
   Index org(Index h) const { return org_[h]; }
   /// The next half-edge around the face of h.
-  Index next(Index h) const { return h + 1 == first_[face_[h] + 1] ? first_[face_[h]] : h + 1; }
+  Index next(Index h) const {
+    return h + 1 == first_[face_[h] + 1] ? first_[face_[h]] : h + 1;
+  }
   /// The previous half-edge around the face of h.
-  Index prev(Index h) const { return h == first_[face_[h]] ? first_[face_[h] + 1] - 1 : h - 1; }
+  Index prev(Index h) const {
+    return h == first_[face_[h]] ? first_[face_[h] + 1] - 1 : h - 1;
+  }
   /// The destination vertex of h.
   Index dest(Index h) const { return org_[next(h)]; }
   /// The half-edge of the face across h, from dest(h) to org(h), or `none` (boundary).
   Index twin(Index h) const { return twin_[h]; }
+  //< half-edges
   /// Number of half-edges.
   std::size_t half_edges() const { return org_.size(); }
   /// The corners at vertex v (one per face that has v).
