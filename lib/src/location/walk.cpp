@@ -91,30 +91,25 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
   const auto& P = S.points();
   for (;;) {
     if (crossed) crossed->push_back(region);
+    // A convex triangle (Δ(a, b, c) > 0: the small one of its vertices, not the complement)
+    // is left by its edge u → w whose ends the line qp separates, u on the right of qp and w
+    // on its left (walk.hpp, "Triangles"); p is inside when on the inner side of u → w.
     //> walk-triangle
-    // A convex triangle (Δ(a, b, c) > 0: the small triangle of its three vertices, not its
-    // complement) is left by the edge u → w whose ends the line qp separates, u on its right
-    // and w on its left: entered through the interior of its edge ab, the segment leaves by bc
-    // when c is on a's side of the line, by ca when on b's side, through c when on the line;
-    // started at a point inside it, by the edge where the sides change from right to left.
-    // Then p, after the point where the segment came in, is inside when it is on the inner side
-    // of that edge. Two to four orientations instead of the general scan of every edge (the
-    // plane's straight walk, which holds on the sphere because the segment is shorter than a
-    // half turn: after it leaves by an edge, it stays on the outer side of that edge's line).
     if (region != Subdivision::outside && S.size(region) == 3) {
-      const Index ab = entry != Subdivision::none ? entry : S.first(region), bc = S.next(ab), ca = S.next(bc);
+      const bool entered = entry != Subdivision::none;
+      const Index ab = entered ? entry : S.first(region), bc = S.next(ab), ca = S.next(bc);
       const Point &a = P[S.org(ab)], &b = P[S.org(bc)], &c = P[S.org(ca)];
       Index out = Subdivision::none;
       if (orient(a, b, c) == POSITIVE) {
         const int sc = orient(q, p, c);
-        if (entry != Subdivision::none && sc == 0) {  // the segment runs into c
+        if (entered && sc == 0) {  // in through ab, the segment runs into c
           if (p == c) return at_vertex(S, S.org(ca));
           if (orient(b, c, p) == POSITIVE) return Location{Location::Kind::face, region, 0};
           v = S.org(ca);
           return std::nullopt;
         }
         const int sa = orient(q, p, a);
-        if (entry != Subdivision::none) {
+        if (entered) {  // a, b on opposite sides: out by bc if c is on a's side, else by ca
           out = sc == sa ? bc : ca;
         } else if (const int sb = orient(q, p, b); sa != 0 && sb != 0 && sc != 0) {
           out = sa < 0 && sb > 0 ? ab : sb < 0 && sc > 0 ? bc : ca;
@@ -125,9 +120,10 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
         const int o = orient(u, w, p);
         if (o > 0) return Location{Location::Kind::face, region, 0};
         if (o == 0) return at_edge(S, out);
-        here = Mark{&u, &w, o};  // mark(u, w, q, p): D_p = o is not 0
-        entry = S.twin(out) == Subdivision::none ? out : S.twin(out);
-        region = S.twin(out) == Subdivision::none ? Subdivision::outside : S.face(entry);
+        here = Mark{&u, &w, o};  // mark(u, w, q, p), as D_p = o is not 0
+        const bool last = S.twin(out) == Subdivision::none;  // u → w is on the boundary
+        entry = last ? out : S.twin(out);
+        region = last ? Subdivision::outside : S.face(entry);
         continue;
       }
     }

@@ -23,12 +23,13 @@
 /// and s = ±1 making α, β ≥ 0, so two meeting points compare along the segment by the sign of
 /// β₁α₂ − β₂α₁ = s₁s₂ (D_q² D_p¹ − D_q¹ D_p²), one degree-6 polynomial (sign_of_poly).
 ///
-/// **Triangles.** A convex triangle entered through the interior of an edge is left by one of
-/// its two other edges, told apart by the side of the line qp its third vertex is on, and p
-/// is inside when it is on the inner side of that edge: the plane's straight walk, two or three
-/// orientations a step (walk.cpp, `walk-triangle`), where the general step above tests every
-/// edge. It holds on the sphere because the segment is shorter than a half turn: after the
-/// point where it leaves, the segment stays on the outer side of that edge's line.
+/// **Triangles.** A convex triangle (Δ > 0) is crossed by the plane's straight walk, two to
+/// four orientations a step, where the general step above tests every edge. Entered through
+/// the interior of its edge ab, the segment leaves by bc when the third vertex c is on a's
+/// side of the line qp, by ca when on b's, through c when on the line; started at a point
+/// inside, by the edge whose ends the line separates with the first on its right. p is inside
+/// when it is on the inner side of that edge. It holds on the sphere because the segment is
+/// shorter than a half turn: after it leaves by an edge, it stays on that edge's outer side.
 
 #include <cstddef>
 #include <string>
