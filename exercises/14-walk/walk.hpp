@@ -31,7 +31,7 @@ struct Location {
 /// on an edge or a vertex is answered with the face of least index that has it, and its slot
 /// there. Faces may lie on the back side or cross Ω; the map may leave part of T² uncovered.
 ///
-/// T holds up to 160 000 faces and Q up to 100 000 queries, given in a spatially coherent order
+/// T holds up to 160 000 faces and Q about 100 000 queries, given in a spatially coherent order
 /// (each near the one before): walk from the last answer (chapter 14, Algorithm 15) instead of
 /// testing every face.
 std::vector<Location> locate_all(const std::vector<t2::Point>& P, const std::vector<Triangle>& T,
