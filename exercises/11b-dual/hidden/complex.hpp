@@ -76,8 +76,9 @@ inline std::optional<V> vertex_of(const std::vector<t2::Point>& P, long a, long 
 }
 
 /// The Delaunay complex of P (proper sites), flat, each polygon fanned from a random corner and
-/// the faces shuffled; "" in `error` when all went well. Polygons of four or more sites are
-/// supported at proper vertices only (cocircular sites), not on Ω.
+/// the faces shuffled; "" in `error` when all went well. A polygon at a proper vertex is ordered
+/// by angle around the drawn centre; one on Ω by trying the cyclic orders until every triple
+/// of it has the vertex by exercise 11's formula (the order the chapter's complex has).
 inline std::vector<long> brute_complex(const std::vector<t2::Point>& P, std::mt19937_64& g, std::string& error) {
   const long n = static_cast<long>(P.size());
   std::map<V, std::vector<long>> found;  // key of the vertex -> its owners
@@ -115,9 +116,22 @@ inline std::vector<long> brute_complex(const std::vector<t2::Point>& P, std::mt1
         const auto A = ex11test::drawn(P[i]), B = ex11test::drawn(P[j]);
         return sgn((A[0] - X) * (B[1] - Y) - (A[1] - Y) * (B[0] - X)) > 0;
       });
-    } else if (o.size() > 3) {
-      error = "bad test input: a vertex on Ω in " + std::to_string(o.size()) + " cells";
-      return {};
+    } else {  // on Ω: the cyclic order in which every triple has the vertex z (few sites)
+      std::sort(o.begin() + 1, o.end());
+      auto all_fit = [&] {
+        for (std::size_t i = 0; i < o.size(); ++i)
+          for (std::size_t j = i + 1; j < o.size(); ++j)
+            for (std::size_t l = j + 1; l < o.size(); ++l) {
+              const auto v = vertex_of(P, o[i], o[j], o[l]);
+              if (!v || !same(*v, z)) return false;
+            }
+        return true;
+      };
+      while (!all_fit())
+        if (!std::next_permutation(o.begin() + 1, o.end())) {
+          error = "bad test input: no order of a polygon on Ω fits its vertex";
+          return {};
+        }
     }
     auto fits = [&] { const auto v = vertex_of(P, o[0], o[1], o[2]); return v && same(*v, z); };
     if (!fits()) std::reverse(o.begin(), o.end());

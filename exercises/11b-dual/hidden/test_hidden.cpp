@@ -87,14 +87,24 @@ TEST(Hidden, Cocircular) {
   expect_dual(P, g);
 }
 
-TEST(Hidden, Collinear) {
-  // Four front sites on a line (chapter 11, section 3, case 4): two flat polygons a1 a2 a3 a4 and
-  // a4 a3 a2 a1, fanned; two vertices on Ω, four edges. Written by hand: the brute force orders
-  // no polygon on Ω.
-  const std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(3, 3), Point::cartesian(1, 1),
+TEST(Hidden, MergedOnOmega) {
+  // A vertex on Ω in four cells: a horizontal bottom hull edge of the front sites and a
+  // horizontal top hull edge of the back sites (drawn) have one pole [0, 0, -1]; its polygon is
+  // cut into two faces with sites on both sides, to be merged by their exact poles.
+  std::mt19937_64 g(1105);
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(1, 0), site(-2, 0.25, 1), site(-1, 0.75, 1)};
+    for (int i = 0; i < 3 + k; ++i) P.push_back(site(1, unit(g), 0.125 + unit(g)));
+    for (int i = 0; i < 3 + k; ++i) P.push_back(site(i % 2 ? -1 : -3, unit(g), unit(g) * 0.875));
+    expect_dual(P, g);
+  }
+  // And four front sites on a line (chapter 11, section 3, case 4): two flat polygons a1 a2 a3 a4
+  // and a4 a3 a2 a1, fanned; two vertices on Ω, four edges. Written by hand: the brute force
+  // finds no vertex of proper sites all on one line.
+  const std::vector<Point> L = {Point::cartesian(0, 0), Point::cartesian(3, 3), Point::cartesian(1, 1),
                                 Point::cartesian(4, 4)};
   const std::vector<long> F = {0, 2, 1, 0, 1, 3, 3, 1, 2, 3, 2, 0};
-  EXPECT_EQ(ex11btest::check(P, F, ex11b::voronoi_vertices(P, F), ex11b::voronoi_edges(P, F)), "");
+  EXPECT_EQ(ex11btest::check(L, F, ex11b::voronoi_vertices(L, F), ex11b::voronoi_edges(L, F)), "");
   // The same drawn on the back side, with another fan.
   const std::vector<Point> B = {site(-2, 0, 0), site(-1, 3, 3), site(-3, 1, 1), site(-1, 4, 4)};
   const std::vector<long> G = {2, 1, 3, 2, 3, 0, 1, 2, 0, 0, 3, 1};
