@@ -81,6 +81,18 @@ bool meets(const Point& a, const Point& b, const Point& q, const Point& p) {
 }
 //< walk-meet
 
+// Across the edge h of `region` (one of the face's own half-edges, or a boundary half-edge for
+// the complement): the region on its other side, and the half-edge of that region it enters by.
+void cross(const Subdivision& S, Index h, Index& region, Index& entry) {
+  if (region == Subdivision::outside) {
+    region = S.face(h), entry = h;
+  } else if (S.twin(h) == Subdivision::none) {
+    region = Subdivision::outside, entry = h;
+  } else {
+    entry = S.twin(h), region = S.face(entry);
+  }
+}
+
 // The walk's second state: in `region`, entered at the point `here` of the segment qp (through
 // the half-edge `entry` of the region, or from a vertex or from a point inside it: none), on to
 // the first point of the segment after `here` on an edge of the region, crossing edges while
@@ -121,9 +133,7 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
         if (o > 0) return Location{Location::Kind::face, region, 0};
         if (o == 0) return at_edge(S, out);
         here = Mark{&u, &w, o};  // mark(u, w, q, p), as D_p = o is not 0
-        const bool last = S.twin(out) == Subdivision::none;  // u → w is on the boundary
-        entry = last ? out : S.twin(out);
-        region = last ? Subdivision::outside : S.face(entry);
+        cross(S, out, region, entry);
         continue;
       }
     }
@@ -158,17 +168,7 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
       return std::nullopt;
     }
     if (at_p) return at_edge(S, best);
-    // Cross the edge.
-    if (region == Subdivision::outside) {
-      region = S.face(best);
-      entry = best;
-    } else if (S.twin(best) == Subdivision::none) {
-      region = Subdivision::outside;
-      entry = best;
-    } else {
-      entry = S.twin(best);
-      region = S.face(entry);
-    }
+    cross(S, best, region, entry);
     here = bm;
   }
 }
