@@ -1,6 +1,5 @@
 // t2 animate: records an algorithm's steps through its trace (t2/trace/*), then writes one
 // self-contained HTML page that plays them back (tools/t2/animate/run.cpp).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -33,7 +32,7 @@ std::string algo_list() {
   return s;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Runs the algorithm ALGO on the points of the scene file FILE (- for standard input),\n"

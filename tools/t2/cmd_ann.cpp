@@ -1,6 +1,5 @@
 // t2 ann: the nearest neighbour of each of a scene's points in T²
 // (t2/proximity/nearest_neighbors.hpp, seed 000 Algorithm 14).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -37,7 +36,7 @@ int run(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the nearest other point of each point of the scene file FILE (- for standard\n"

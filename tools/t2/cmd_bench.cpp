@@ -4,7 +4,6 @@
 // fitted growth exponent, and a log-log plot (<t2/draw/loglog.hpp>). Every measurement runs in a fresh
 // process of the benchmark worker (bench/t2_bench_worker.cpp: it links CGAL and qhull, this tool
 // never does), so peak memories never add up and one crash loses one run.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -250,7 +249,7 @@ std::string catalogue() {
   return s;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Times ALGO (and its peers) on seeded inputs, every run in a fresh process of the benchmark\n"
@@ -261,16 +260,16 @@ Action setup(CLI::App& app) {
       "t2 bench graham --vs jarvis --input circle --range 1000..100000 --plot gj.svg;\n"
       "t2 bench delaunay --vs raw,exact --range 1000..100000 (the cost of exactness; hull too).");
   app.add_option("ALGO", o->algo, "the t2 algorithm: " + algorithms::words(timed_names()))->required();
-  app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(CLI::PositiveNumber);
+  app.add_option("--n", o->n, "the number of points (default 100000)")->type_name("N")->check(PositiveNumber);
   app.add_option("--range", o->range, "sizes from N1 to N2 in logarithmic steps")->type_name("N1..N2");
   app.add_option("--per-decade", o->per_decade, "steps of --range per factor 10 (default 2)")
       ->type_name("K")
-      ->check(CLI::Range(1, 20));
+      ->check(Range(1, 20));
   app.add_option("--input", o->input, "the generator (default uniform; cube for hull3d)")->type_name("KIND");
   app.add_option("--vs", o->vs, "peers, comma-separated (default: see below)")->type_name("PEER")->delimiter(',');
   app.add_option("--repeat", o->repeat, "runs per measurement; the table gives medians (default 1)")
       ->type_name("R")
-      ->check(CLI::Range(1, 1000));
+      ->check(Range(1, 1000));
   app.add_option("--seed", o->seed, "the generator's seed (default 1)")->type_name("S");
   app.add_option("--plot", o->plot, "write the log-log plot of CPU time (SVG, atomically)")->type_name("OUT.svg");
   app.add_option("--csv", o->csv, "write the medians as CSV (atomically)")->type_name("OUT.csv");

@@ -1,5 +1,4 @@
 // t2 book: build the HTML book; check and sync the listings cut from source files.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -89,7 +88,7 @@ int book_command(const BookArgs& a) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto a = std::make_shared<BookArgs>();
   app.description(
       "ACTION is build (the default), check or sync; --out and --docs are options of build,\n"
@@ -121,7 +120,7 @@ Action setup(CLI::App& app) {
       "       when --root is the checkout t2 was built from (otherwise output is unchecked).\n"
       "sync   Rewrites every listing of every chapter from its source region.");
   app.add_option("ACTION", a->action, "build (the default), check or sync")
-      ->check(CLI::IsMember({"build", "check", "sync"}));
+      ->check(IsMember({"build", "check", "sync"}));
   app.add_option("--out,-o", a->out, "build: the output folder (default <build>/book)")->type_name("DIR");
   app.add_option("--docs", a->docs, "build: the Doxygen output to link to (DIR/t2.tag, DIR/html)")->type_name("DIR");
   app.add_option("--programs", a->programs, "check: the folder of the chapter_NN programs")->type_name("DIR");

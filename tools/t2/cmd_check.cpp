@@ -1,5 +1,4 @@
 // `t2 check NN`: the student's own run of the public tests, in plain words.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -25,7 +24,7 @@ int check(const Options& o) {
   return rep.compiled && rep.score() == rep.max_score() ? kOk : kFailed;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Builds your solution of exercise NN (the file named in its exercise.txt, by default\n"

@@ -1,6 +1,5 @@
 // t2 closest-pair: the closest pair of a scene's points in T² (t2/proximity/closest_pair.hpp),
 // by brute force or from the Delaunay edges.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -32,7 +31,7 @@ int run(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the closest pair of the points of the scene file FILE (- for standard input)\n"
@@ -41,7 +40,7 @@ Action setup(CLI::App& app) {
       "a front and a back point (the pair farthest apart as drawn).");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_option("--algorithm", o->algorithm, "brute (all pairs) or delaunay (the edges of each side)")
-      ->check(CLI::IsMember({"brute", "delaunay"}));
+      ->check(IsMember({"brute", "delaunay"}));
   add_drawing_options(app, o->drawing, "the points and the pair");
   app.footer(
       "Output: one line 'i j', 0-based indices of the scene's points, i < j; among equally\n"

@@ -1,6 +1,5 @@
 // t2 delaunay: the Delaunay triangulation of a scene's points (t2/triangulation/delaunay.hpp,
 // incremental; divide.hpp, divide and conquer; lawson.hpp, flips).
-#include <CLI/CLI.hpp>
 
 #include <memory>
 
@@ -13,7 +12,7 @@
 namespace t2cli {
 namespace {
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<TrianglesOptions>();
   o->algorithm = "incremental";
   app.description(
@@ -27,7 +26,7 @@ Action setup(CLI::App& app) {
                  "(Guibas-Stolfi divide and conquer on the quad-edge) or flip (Lawson: the\n"
                  "sweep triangulation, then flips)")
       ->type_name("A")
-      ->check(CLI::IsMember({"incremental", "divide", "flip"}));
+      ->check(IsMember({"incremental", "divide", "flip"}));
   return triangles_setup(app, o, "delaunay", [](std::span<const t2::Point> P, const TrianglesOptions& opt) {
     if (opt.algorithm == "flip") return t2::delaunay_by_flips(P);
     if (opt.algorithm == "divide") return t2::delaunay_divide(P);

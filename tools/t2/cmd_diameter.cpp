@@ -1,6 +1,5 @@
 // t2 diameter: a farthest pair of a scene's points (t2/hull/diameter.hpp) and, for points of one
 // side, the width (t2/hull/calipers.hpp).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -84,7 +83,7 @@ int diameter(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints a farthest pair of the points of the scene file FILE (- for standard input), as\n"

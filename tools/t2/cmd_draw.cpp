@@ -1,5 +1,4 @@
 // t2 draw: the picture of a scene file in the planar model, the spherical model, or both.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -67,7 +66,7 @@ int draw(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Reads the scene files FILE... (the format is described in the README, section \"Scene\n"
@@ -80,14 +79,14 @@ Action setup(CLI::App& app) {
       "(t2 hull FILE --scene OUT, ...) composes with its input: t2 draw FILE OUT -o fig.svg.");
   app.add_option("FILE", o->files, "the scene files, drawn in order")->required();
   app.add_option("--model", o->model, "plane, sphere or both side by side (default both)")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}))
+      ->check(IsMember({"plane", "sphere", "both"}))
       ->type_name("plane|sphere|both");
-  app.add_option_function<std::string>(
+  app.add_option_function(
          "--view", [o](const std::string& v) { o->sphere = parse_view(v); },
          "direction from which the sphere is seen, degrees (default 25,-65)")
       ->type_name("LAT,LON");
   app.add_option("--format", o->format, "svg, png or pdf (default: from the extension of OUT)")
-      ->check(CLI::IsMember({"svg", "png", "pdf"}))
+      ->check(IsMember({"svg", "png", "pdf"}))
       ->type_name("svg|png|pdf");
   app.add_option("-o", o->output, "the picture; written atomically, only when everything succeeded")
       ->required()

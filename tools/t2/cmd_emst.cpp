@@ -1,6 +1,5 @@
 // t2 emst: the minimum spanning tree of a scene's points in T² (t2/proximity/spanning_tree.hpp,
 // seed 000 Algorithm 12).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -29,7 +28,7 @@ int run(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the minimum spanning tree of the points of the scene file FILE (- for standard\n"

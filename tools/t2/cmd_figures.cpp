@@ -1,6 +1,5 @@
 // t2 figures: regenerate every figure of the book (chapter programs and the gallery), or check
 // that the committed figures are what the programs draw.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -181,7 +180,7 @@ int figures(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Runs, in parallel, every chapter program bin/chapter_NN next to this t2 (for each\n"
@@ -193,7 +192,7 @@ Action setup(CLI::App& app) {
                "that differs from the committed one or is missing, and every file of\n"
                "figures/ that no program writes; change nothing");
   app.add_option("--jobs,-j", o->parallel, "run at most N programs at a time (default: the number of cores)")
-      ->check(CLI::Range(1, 256))
+      ->check(Range(1, 256))
       ->type_name("N");
   app.add_option("--root", o->root, "the source tree (default: the one this t2 was built from)")->type_name("DIR");
   app.footer(

@@ -1,5 +1,4 @@
 // t2 gen: seeded, reproducible inputs (t2/gen/generate.hpp) written as scene files.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -40,7 +39,7 @@ std::string kinds() {
   return s;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Writes N seeded random points (vertices, segments) of KIND as a scene file: the same\n"
@@ -51,11 +50,11 @@ Action setup(CLI::App& app) {
   app.add_option("--seed", o->gen.seed, "the random stream (default 1)")->type_name("S");
   app.add_option("--back", o->gen.back, "both-sides: the share behind (default 0.3)")
       ->type_name("B")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(Range(0.0, 1.0));
   app.add_option("--crossings", o->gen.crossings, "segments: the number of crossings (default 0)")->type_name("C");
   app.add_option("--clusters", o->gen.clusters, "normal: the number of clusters (default 4)")
       ->type_name("K")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber);
   app.add_flag("--cartesian", o->gen.cartesian, "circle: rounded Cartesian points instead of exact homogeneous ones");
   app.add_flag("--untangle", o->gen.untangle,
                "simple-polygon: 2-opt untangling of the points in random order instead of space partitioning");

@@ -1,5 +1,4 @@
 // `t2 grade NN`: the instructor's (or Gradescope's) run of public and hidden tests.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -38,7 +37,7 @@ int grade(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Builds the submission (DIR holds the exercise's source file; default: .) in the sandbox\n"
@@ -54,15 +53,15 @@ Action setup(CLI::App& app) {
   app.add_option("--results", o->results, "write Gradescope's results.json here")->type_name("FILE");
   app.add_option("--overall-limit", o->overall_limit, "seconds for the whole run (default 900)")
       ->type_name("SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber);
   app.add_option("--compile-limit", o->compile_limit, "seconds for compiling and linking (default 120)")
       ->type_name("SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber);
   app.add_option("--time-limit", o->time_limit, "CPU seconds per test (default: the manifest's)")
       ->type_name("SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber);
   app.add_option("--hidden-visibility", o->visibility, "hidden or after_due_date")
-      ->check(CLI::IsMember({"hidden", "after_due_date"}));
+      ->check(IsMember({"hidden", "after_due_date"}));
   app.add_option("--exercises", o->root, "the exercises folder")->type_name("DIR");
   app.add_flag("--quiet", o->quiet, "print no summary");
   app.add_flag("--unsafe", o->unsafe,

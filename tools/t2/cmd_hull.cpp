@@ -1,5 +1,4 @@
 // t2 hull: the convex hull of a scene's points (t2/hull.hpp), as indices, optionally drawn.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -68,7 +67,7 @@ int hull(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the convex hull of the points of the scene file FILE (- for standard input): the\n"
@@ -83,7 +82,7 @@ Action setup(CLI::App& app) {
                  "automatic (default: Akl-Toussaint + monotone chain on front-only input, else\n"
                  "merge), merge, jarvis, graham, quickhull or monotone")
       ->type_name("A")
-      ->check(CLI::IsMember(names_of(t2::hull_algorithms)));
+      ->check(IsMember(names_of(t2::hull_algorithms)));
   add_drawing_options(app, o->drawing, "the points and the hull");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"

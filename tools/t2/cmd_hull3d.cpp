@@ -1,5 +1,4 @@
 // t2 hull3d: the convex hull of points of R³ (t2/hull3d.hpp), as outward triangles, optionally drawn.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <charconv>
@@ -79,7 +78,7 @@ int hull3d(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the convex hull of the points of R3 in FILE (- for standard input; lines 'x y z',\n"
@@ -92,7 +91,7 @@ Action setup(CLI::App& app) {
   app.add_option("FILE", o->file, "the points, - for standard input")->required();
   app.add_option("--algorithm", o->algorithm, "quickhull (default), incremental (random order) or gift-wrap")
       ->type_name("A")
-      ->check(CLI::IsMember(names_of(t2::hull3d_algorithms)));
+      ->check(IsMember(names_of(t2::hull3d_algorithms)));
   app.add_flag("--facets", o->facets, "print the facets instead: one polygon per line, counter-clockwise from outside");
   app.add_option("--svg", o->svg, "also draw the hull and the points to OUT (.svg, .png or .pdf, atomically)")
       ->type_name("OUT");

@@ -1,5 +1,4 @@
 // t2 info: what a scene file holds, point by point.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -105,7 +104,7 @@ int info(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Reads the scene file FILE (- for standard input; the format is described in the\n"

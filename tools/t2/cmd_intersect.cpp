@@ -1,5 +1,4 @@
 // t2 intersect: the intersection points of a scene's segments (t2/intersect/intersections.hpp).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -56,7 +55,7 @@ int intersect(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the intersection points of the segment blocks of the scene file FILE (- for\n"
@@ -72,7 +71,7 @@ Action setup(CLI::App& app) {
                  "sweep (default: Bentley-Ottmann, front segments only) or brute (every pair,\n"
                  "every segment of T2: front, back, crossing Omega, on Omega)")
       ->type_name("A")
-      ->check(CLI::IsMember({"brute", "sweep"}));
+      ->check(IsMember({"brute", "sweep"}));
   add_drawing_options(app, o->drawing, "the segments and the intersection points");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the sweep\n"

@@ -1,6 +1,5 @@
 // t2 kernel: the kernel of a scene's polygon block (t2/hull/polygon_kernel.hpp), the points that
 // see all of the polygon. "Kernel" here is the polygon's, not the predicate kernel of the library.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -77,7 +76,7 @@ int polygon_kernel(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the kernel of the polygon block of the scene file FILE (- for standard input):\n"

@@ -1,5 +1,4 @@
 // t2 layers: the convex layers of a scene's points (t2/hull/layers.hpp), one line per layer.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -68,7 +67,7 @@ int layers(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the convex layers of the points of the scene file FILE (- for standard input):\n"
@@ -81,7 +80,7 @@ Action setup(CLI::App& app) {
                  "jarvis (default: repeated Jarvis marches, O(n^2)) or graham (repeated Graham\n"
                  "scans, O(n^2 log n)): the two ways of seed 003, with the same answer")
       ->type_name("M")
-      ->check(CLI::IsMember(names_of(t2::layers_methods)));
+      ->check(IsMember(names_of(t2::layers_methods)));
   add_drawing_options(app, o->drawing, "the points and the layers");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the\n"

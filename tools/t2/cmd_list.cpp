@@ -1,5 +1,4 @@
 // t2 list: the chapters of the course.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -25,7 +24,7 @@ int list(const std::filesystem::path& root) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto root = std::make_shared<std::filesystem::path>(book::default_root());
   app.description(
       "Prints one line per chapter folder chapters/NN-slug/: the number, the slug, whether\n"

@@ -1,7 +1,6 @@
 // t2 locate: where each point of a scene lies in a subdivision of T² whose faces are the
 // polygons of another scene (t2/location/: the walk of seed 000's Algorithm 15, or every face
 // tested).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -57,7 +56,7 @@ int locate(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints, for each point of the scene file QUERIES, where it lies in the subdivision of T2\n"
@@ -73,7 +72,7 @@ Action setup(CLI::App& app) {
                  "walk (default: seed 000's Algorithm 15, from vertex 0 along the segment to\n"
                  "the query) or brute (every face tested in order)")
       ->type_name("A")
-      ->check(CLI::IsMember({"walk", "brute"}));
+      ->check(IsMember({"walk", "brute"}));
   add_drawing_options(app, o->drawing, "the map and the queries");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong, a face that is\n"

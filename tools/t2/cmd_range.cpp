@@ -1,6 +1,5 @@
 // t2 range: the points of a scene in closed iso-rectangles of T², counted by the locus method
 // (t2/range/locus.hpp) or by testing every point (`contains`, bbox.hpp).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <charconv>
@@ -92,7 +91,7 @@ int range(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints, for each closed iso-rectangle of RECTS, the ascending indices of the points of\n"
@@ -108,7 +107,7 @@ Action setup(CLI::App& app) {
                  "brute (default: every point tested) or locus (seed 000's Algorithms 17-18:\n"
                  "O(n^2) preprocessing, O(log n) a query; counts only)")
       ->type_name("A")
-      ->check(CLI::IsMember({"brute", "locus"}));
+      ->check(IsMember({"brute", "locus"}));
   app.add_flag("--count", o->count, "print the number of points, not their indices");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 a\n"

@@ -7,7 +7,6 @@
 #include <optional>
 #include <sstream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "command.hpp"
@@ -163,7 +162,7 @@ int release(const Options& o) {
   return autograder(o.out, o.exercise);
 }
 
-t2cli::Action setup(CLI::App& app) {
+t2cli::Action setup(t2cli::Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "student: the course for students (chapters, library, figures, exercise stubs and\n"
@@ -177,7 +176,7 @@ t2cli::Action setup(CLI::App& app) {
       "  (.github/classroom/autograding.json) that runs the public tests.");
   app.add_option("KIND", o->kind, "student, autograder or classroom")
       ->required()
-      ->check(CLI::IsMember({"student", "autograder", "classroom"}));
+      ->check(t2cli::IsMember({"student", "autograder", "classroom"}));
   app.add_option("OUT", o->out, "the folder (or OUT.zip for autograder) to write")->required();
   app.add_option("--exercise", o->exercise, "autograder (required): the one exercise it grades")->type_name("NN");
   app.footer("Exit status: 0 written; 2 bad usage, an existing OUT, or secret content found.");

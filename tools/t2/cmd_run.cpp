@@ -1,5 +1,4 @@
 // t2 run NN: build the program of a chapter if needed, then run it.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -44,7 +43,7 @@ int run(const Options& o, const std::vector<std::string>& args) {
   return rc < 0 ? kFailed : rc;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Builds the chapter's program (cmake --build <build dir> --target chapter_NN, in the\n"

@@ -1,5 +1,4 @@
 // t2 triangulate: a triangulation of a scene's points (t2/triangulation/triangulate.hpp).
-#include <CLI/CLI.hpp>
 
 #include <memory>
 
@@ -10,7 +9,7 @@
 namespace t2cli {
 namespace {
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<TrianglesOptions>();
   app.description(
       "Prints a triangulation of the points of the scene file FILE (- for standard input). Front\n"

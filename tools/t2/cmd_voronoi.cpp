@@ -1,6 +1,5 @@
 // t2 voronoi: the Voronoi diagram of T² of a scene's points (t2/voronoi/voronoi.hpp, the dual
 // of the Delaunay complex, Algorithm 11): exact vertices, edges and bisector lines, for scripts.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -114,7 +113,7 @@ int run(const Options& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
       "Prints the Voronoi diagram of T2 of the points of the scene file FILE (- for standard\n"

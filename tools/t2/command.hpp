@@ -1,10 +1,10 @@
 #pragma once
 // The subcommands of the `t2` tool. Each lives in its own cmd_*.cpp and registers itself with
-// T2_COMMAND, so adding a command never touches another file. Arguments are parsed by CLI11.
+// T2_COMMAND, so adding a command never touches another file. Arguments are parsed by CLI11,
+// through the layer of arguments.hpp (CLI11 itself is compiled in arguments.cpp only).
 //
 // How to add a command `t2 frob` (one new file, tools/t2/cmd_frob.cpp; the CMake glob finds it):
 //
-//   #include <CLI/CLI.hpp>
 //   #include "command.hpp"
 //   namespace t2cli {
 //   namespace {
@@ -13,7 +13,7 @@
 //     bool verbose = false;
 //   };
 //   int frob(const Options& o) { ...; return kOk; }   // the work; throws UsageError, t2::BadInput...
-//   Action setup(CLI::App& app) {
+//   Action setup(Arguments& app) {
 //     auto o = std::make_shared<Options>();
 //     app.description("Frobs FILE. (Prose of the help, after the usage line.)");
 //     app.add_option("FILE", o->file, "the scene file")->required();
@@ -26,9 +26,10 @@
 //   }  // namespace t2cli
 //
 // One declaration per option: its names, the variable it fills, its help line, and its checks
-// (->required(), ->check(CLI::Range(1, 256)), ->check(CLI::IsMember({"a", "b"})),
-// ->type_name("OUT") for the word shown in the usage). main.cpp builds a CLI::App "t2 NAME" for
-// the command, calls setup, parses the arguments after the name, and then runs the action.
+// (->required(), ->check(Range(1, 256)), ->check(IsMember({"a", "b"})),
+// ->type_name("OUT") for the word shown in the usage). arguments.cpp builds a CLI::App
+// "t2 NAME" for the command, calls setup with it (as Arguments), parses the arguments after the
+// name, and then runs the action.
 // The help (`t2 NAME --help`, `t2 help NAME`) is generated: the usage line from the options in
 // the order they were declared, the description, the options with their help lines, the footer.
 // Bad usage (an unknown option, a missing value, a failed check, or UsageError thrown by the
@@ -41,9 +42,8 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "arguments.hpp"
+
 
 namespace t2cli {
 
@@ -59,7 +59,7 @@ enum Exit : int {
 using Action = std::function<int()>;
 
 /// Declares a command's options on `app` (bound to state the returned Action owns).
-using Setup = Action (*)(CLI::App& app);
+using Setup = Action (*)(Arguments& app);
 
 struct Command {
   const char* name;     ///< the word after `t2`

@@ -1,6 +1,5 @@
 #include "model_picture.hpp"
 
-#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +12,11 @@ namespace t2cli {
 
 namespace dr = t2::draw;
 
-void add_drawing_options(CLI::App& app, AnswerDrawing& d, const std::string& what) {
+void add_drawing_options(Arguments& app, AnswerDrawing& d, const std::string& what) {
   app.add_option("--svg", d.svg, "also draw " + what + " to OUT (SVG, atomically)")->type_name("OUT");
   app.add_option("--model", d.model, "the models drawn: plane, sphere or both (default both)")
       ->type_name("M")
-      ->check(CLI::IsMember({"plane", "sphere", "both"}));
+      ->check(IsMember({"plane", "sphere", "both"}));
   app.add_option("--scene", d.scene,
                  "also write the answer as a scene file to OUT (atomically), styled to be drawn over\n"
                  "the input: t2 draw FILE OUT -o fig.svg")

@@ -9,15 +9,12 @@
 #include <string_view>
 #include <vector>
 
+#include "arguments.hpp"
 #include "t2/draw/figure.hpp"
 #include "t2/draw/render.hpp"
 #include "t2/draw/view.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/scene.hpp"
-
-namespace CLI {
-class App;
-}
 
 namespace t2cli {
 
@@ -31,7 +28,7 @@ struct AnswerDrawing {
 
 /// Declares `--svg OUT`, `--model M` and `--scene OUT` on `app`, stored in `d`; `what` says
 /// what is drawn ("the points and the hull").
-void add_drawing_options(CLI::App& app, AnswerDrawing& d, const std::string& what);
+void add_drawing_options(Arguments& app, AnswerDrawing& d, const std::string& what);
 
 /// The attributes written as in a scene file, `key=value` separated by spaces (no quoted
 /// values: set a label with spaces directly), e.g. `style_of("color=green width=2 layer=1")`.

@@ -1,7 +1,6 @@
 // The output of `t2 triangulate` and `t2 delaunay` (see triangles_command.hpp).
 #include "triangles_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -90,7 +89,7 @@ int run(const TrianglesOptions& o, const std::string& command, const Triangulati
 
 }  // namespace
 
-Action triangles_setup(CLI::App& app, std::shared_ptr<TrianglesOptions> o, const std::string& command,
+Action triangles_setup(Arguments& app, std::shared_ptr<TrianglesOptions> o, const std::string& command,
                        TriangulationBuilder build) {
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_flag("--infinite", o->infinite,

@@ -27,7 +27,7 @@ using TriangulationBuilder = std::function<t2::Triangulation(std::span<const t2:
 
 /// Declares FILE, --infinite, --svg and --model on `app` (after the command's own options) and
 /// the help's footer; returns the action that reads the scene, builds, prints and draws.
-Action triangles_setup(CLI::App& app, std::shared_ptr<TrianglesOptions> o, const std::string& command,
+Action triangles_setup(Arguments& app, std::shared_ptr<TrianglesOptions> o, const std::string& command,
                        TriangulationBuilder build);
 
 }  // namespace t2cli
