@@ -4,11 +4,14 @@
 # and its build (that tree builds every test).
 # Each test is built and run in one tree (T2_TESTS, tests/CMakeLists.txt): the ASan tree runs the
 # unit tests, the default tree those that need the optimized build, and the few listed in both.
+# No test runs a benchmark program, so the default tree here builds none (build.sh builds them:
+# its preset turns T2_BUILD_BENCHMARKS on again); the ASan tree builds the benchmark worker, which
+# its tests run.
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/deps.sh
 scripts/ninja-trees.sh
-cmake --preset default -DT2_TESTS=optimized
+cmake --preset default -DT2_TESTS=optimized -DT2_BUILD_BENCHMARKS=OFF
 cmake --build --preset default
 ctest --preset default
 cmake --preset asan
