@@ -12,6 +12,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <condition_variable>
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -163,28 +165,37 @@ class Cgroup {
 
 // A run's cgroup and, when the tree has a CPU limit, the thread that enforces it: it reads the
 // tree's CPU time every 50 ms and kills the tree when it is over (RLIMIT_CPU counts one process
-// only: a forked worker doubled the limit, issue 29).
+// only: a forked worker doubled the limit, issue 29). It is woken when the run ends, so that
+// ending costs no wait for the next reading (25 ms a run on average, thousands of runs in the
+// exercise tests).
 struct TreeHold {
   std::shared_ptr<Cgroup> cg;
   std::shared_ptr<std::atomic<bool>> over = std::make_shared<std::atomic<bool>>(false);
-  std::atomic<bool> stop{false};
+  std::mutex m;
+  std::condition_variable wake;
+  bool stop = false;  // guarded by m
   std::thread watcher;
   TreeHold(std::shared_ptr<Cgroup> c, double cpu_limit) : cg(std::move(c)) {
     if (cpu_limit <= 0 || cg->cpu_seconds() < 0) return;
     watcher = std::thread([this, cpu_limit] {
+      std::unique_lock<std::mutex> lock(m);
       while (!stop) {
         if (cg->cpu_seconds() > cpu_limit) {
           *over = true;
           cg->kill_all();
         }
-        usleep(50000);
+        wake.wait_for(lock, std::chrono::milliseconds(50), [this] { return stop; });
       }
     });
   }
   TreeHold(const TreeHold&) = delete;
   TreeHold& operator=(const TreeHold&) = delete;
   ~TreeHold() {
-    stop = true;
+    {
+      std::lock_guard<std::mutex> lock(m);
+      stop = true;
+    }
+    wake.notify_all();
     if (watcher.joinable()) watcher.join();
   }
 };
