@@ -79,8 +79,14 @@ dr::PlaneView plane_view(const std::vector<Point>& P) {
 
 std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
   dr::Figure f;
-  for (const auto& t : s.triangles)  // the triangulation so far
-    for (int k = 0; k < 3; ++k) segment(f, P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(kMesh).width(1).layer(0));
+  // The triangulation so far: each edge once, from its lower index (an edge of two triangles,
+  // drawn from both, was two lines of the page that differ only in direction).
+  std::vector<std::pair<std::size_t, std::size_t>> mesh;
+  for (const auto& t : s.triangles)
+    for (int k = 0; k < 3; ++k) mesh.emplace_back(std::minmax<std::size_t>(t[k], t[(k + 1) % 3]));
+  std::sort(mesh.begin(), mesh.end());
+  mesh.erase(std::unique(mesh.begin(), mesh.end()), mesh.end());
+  for (const auto& [i, j] : mesh) segment(f, P[i], P[j], dr::Style().color(kMesh).width(1).layer(0));
   for (const auto& t : s.touched) {  // the triangles in focus
     if (P[t[0]] == P[t[1]] || P[t[1]] == P[t[2]] || P[t[2]] == P[t[0]]) continue;
     // a lune of T² (two antipodal vertices): no segment between them to fill; its edges show

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <map>
@@ -88,12 +89,33 @@ std::string px(double v) {
   return t == "-0" ? "0" : t;
 }
 
-// The path data d made lighter when it is made of straight pieces only (M, L, Z): each piece
-// simplified to 0.25 px (Douglas–Peucker) and written to 0.1 px. A picture's pixels, not
-// geometry: the page is scaled to the screen, where a quarter pixel does not show. Curves (the
-// glyphs of the labels) are left as they are.
+// Path data with every number written to 0.1 px (the curves of the labels' glyphs and of the
+// circles, which Cairo writes to 6 decimals): "M 12.515625 3 C ..." becomes "M12.5 3C...".
+std::string rounded_path(std::string_view d) {
+  std::string out;
+  std::istringstream in{std::string(d)};
+  std::string word;
+  bool after_number = false;
+  while (in >> word) {
+    if (std::isalpha(static_cast<unsigned char>(word[0]))) {
+      out += word;
+      after_number = false;
+    } else {
+      if (after_number) out += ' ';
+      out += px(std::stod(word));
+      after_number = true;
+    }
+  }
+  return out;
+}
+
+// The path data d made lighter. Straight pieces only (M, L, Z): each piece simplified to 0.25 px
+// (Douglas–Peucker) and written to 0.1 px. With curves (C): every number written to 0.1 px. A
+// picture's pixels, not geometry: the page is scaled to the screen, where a quarter pixel does
+// not show.
 std::string lighter_path(std::string_view d) {
-  if (d.find_first_not_of("MLZ0123456789.-+e ") != std::string_view::npos) return std::string(d);
+  if (d.find_first_not_of("MLZC0123456789.-+e ") != std::string_view::npos) return std::string(d);
+  if (d.find('C') != std::string_view::npos) return rounded_path(d);
   std::string out;
   std::vector<std::array<double, 2>> run;
   auto flush = [&] {
