@@ -1,9 +1,10 @@
 // The proximity problems of T² (chapter 12, t2/proximity/), timed by `t2 bench` on points of
-// the plane; not yet animated (Kruskal's animation is issue 25's later part). Each builds the
-// Delaunay triangulation of each side in its run, so `t2 bench emst delaunay` compares the
-// whole cost with the triangulation's.
+// the plane; not yet animated (Kruskal's animation is issue 25's later part). Each but `sec`
+// builds the Delaunay triangulation of each side in its run, so `t2 bench emst delaunay`
+// compares the whole cost with the triangulation's.
 #include "algorithms/registry.hpp"
 #include "t2/proximity/closest_pair.hpp"
+#include "t2/proximity/enclosing_circle.hpp"
 #include "t2/proximity/nearest_neighbors.hpp"
 #include "t2/proximity/spanning_tree.hpp"
 
@@ -13,6 +14,7 @@ namespace {
 T2_PROBLEM({"emst", "edges", Input::plane});
 T2_PROBLEM({"ann", "sites", Input::plane});
 T2_PROBLEM({"closest-pair", "pairs", Input::plane});
+T2_PROBLEM({"sec", "support sites", Input::plane});
 
 T2_ALGORITHM({.name = "emst",  // what `t2 emst` runs
               .problem = "emst",
@@ -40,6 +42,17 @@ T2_ALGORITHM({.name = "closest-pair",  // what `t2 closest-pair` runs (--algorit
                   return std::size_t(1);
                 };
               }});
+
+T2_ALGORITHM({.name = "sec",  // what `t2 sec` runs
+              .problem = "sec",
+              .summary = "t2::smallest_enclosing_circle: Welzl's randomized algorithm, expected O(n) exact predicates",
+              .title = "the smallest enclosing circle (Welzl)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  return t2::smallest_enclosing_circle(std::span<const t2::Point>(P)).support.size();
+                };
+              },
+              .peers = {"cgal"}});
 
 }  // namespace
 }  // namespace t2cli::algorithms

@@ -1,0 +1,136 @@
+// The smallest enclosing circle by Welzl's algorithm (t2/proximity/enclosing_circle.hpp).
+#include "t2/proximity/enclosing_circle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <random>
+
+#include "t2/kernel/circle.hpp"
+#include "t2/kernel/filter.hpp"
+#include "t2/kernel/incircle.hpp"
+
+namespace t2 {
+namespace {
+
+using Index = EnclosingCircle::Index;
+
+/// A circle of the algorithm: the sites that define it (1, 2 or 3 of them).
+struct Disk {
+  std::array<Index, 3> s{};
+  int k = 0;  ///< how many sites: 1 a point, 2 a diameter, 3 a circumcircle
+};
+
+/// The side of p relative to the closed disk with diameter ab, for proper points on one side:
+/// POSITIVE inside, ZERO on the circle, NEGATIVE outside. It is −sign((P − A)·(P − B)), whose
+/// homogeneous form Σ (p·a_w − a·p_w)(p·b_w − b·p_w) differs by the factor p_w²·a_w·b_w > 0.
+Sign in_diameter_disk(const Point& a, const Point& b, const Point& p) {
+  return -sign_of_poly(
+      [](const auto& a, const auto& b, const auto& p) {
+        return (p.x * a.w - a.x * p.w) * (p.x * b.w - b.x * p.w) + (p.y * a.w - a.y * p.w) * (p.y * b.w - b.y * p.w);
+      },
+      a, b, p);
+}
+
+/// The side of P[i] relative to the closed disk of d (POSITIVE inside, ZERO on, NEGATIVE out).
+Sign side(const std::vector<Point>& P, const Disk& d, Index i) {
+  if (d.k == 3) return in_disk(P[d.s[0]], P[d.s[1]], P[d.s[2]], P[i]);
+  if (d.k == 2) return in_diameter_disk(P[d.s[0]], P[d.s[1]], P[i]);
+  return P[i] == P[d.s[0]] ? ZERO : NEGATIVE;
+}
+
+/// The order of the algorithm: 0 … n−1 shuffled by Fisher–Yates with a fixed seed (header).
+std::vector<Index> shuffled(Index n) {
+  std::vector<Index> o(n);
+  for (Index i = 0; i < n; ++i) o[i] = i;
+  std::mt19937_64 rng(0x5ec'c1'2c1e);
+  for (Index i = n; i > 1; --i) std::swap(o[i - 1], o[static_cast<Index>(rng() % i)]);
+  return o;
+}
+
+//> welzl
+/// Welzl's algorithm on the front points P (de Berg et al.'s three loops): the disk of the
+/// first i sites of the order, and when site o[i] is outside it, the smallest disk with o[i]
+/// on its boundary, found by the same scan with one, then two sites fixed.
+Disk welzl(const std::vector<Point>& P, const std::vector<Index>& o) {
+  const Index n = static_cast<Index>(o.size());
+  if (n == 1) return Disk{{o[0], 0, 0}, 1};
+  Disk d{{o[0], o[1], 0}, 2};  // the circle with diameter o[0] o[1]
+  for (Index i = 2; i < n; ++i) {
+    if (side(P, d, o[i]) != NEGATIVE) continue;
+    d = Disk{{o[i], o[0], 0}, 2};  // o[i] is on the circle of the first i + 1 sites
+    for (Index j = 1; j < i; ++j) {
+      if (side(P, d, o[j]) != NEGATIVE) continue;
+      d = Disk{{o[i], o[j], 0}, 2};  // and so is o[j]
+      for (Index k = 0; k < j; ++k)
+        if (side(P, d, o[k]) == NEGATIVE) d = Disk{{o[i], o[j], o[k]}, 3};  // and o[k]
+    }
+  }
+  return d;
+}
+//<
+
+/// The centre of d with exact integers and no division, reduced (no common factor).
+ExactPoint center_of(const std::vector<Point>& P, const Disk& d) {
+  ExactPoint c = to_exact(P[d.s[0]]);
+  if (d.k == 2) {
+    const ExactPoint a = to_exact(P[d.s[0]]), b = to_exact(P[d.s[1]]);
+    c = mix(Integer(abs(b.w())), a, Integer(abs(a.w())), b);  // the midpoint, on their side
+  } else if (d.k == 3) {
+    c = circle_through(to_exact(P[d.s[0]]), to_exact(P[d.s[1]]), to_exact(P[d.s[2]])).center();
+  }
+  Integer g;
+  mpz_gcd(g.get_mpz_t(), c.w().get_mpz_t(), c.x().get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.y().get_mpz_t());
+  return ExactPoint(Integer(c.w() / g), Integer(c.x() / g), Integer(c.y() / g));
+}
+
+/// |C − A|² for the centre c and a proper point a of its side, exactly.
+Rational squared_radius(const ExactPoint& c, const ExactPoint& a) {
+  const Integer dx = c.x() * a.w() - a.x() * c.w(), dy = c.y() * a.w() - a.y() * c.w(), ww = c.w() * a.w();
+  Rational r(Integer(dx * dx + dy * dy), Integer(ww * ww));
+  r.canonicalize();
+  return r;
+}
+
+}  // namespace
+
+EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
+  if (points.empty()) throw BadInput("the smallest enclosing circle needs at least one site");
+  if (points.size() >= std::numeric_limits<Index>::max())
+    throw BadInput("the smallest enclosing circle takes at most 2^32 - 2 sites");
+  const Index n = static_cast<Index>(points.size());
+  // The definition of T² (header): proper sites, all on one side.
+  for (Index i = 0; i < n; ++i)
+    if (points[i].w() == 0)
+      throw UndefinedEnclosing(i, i,
+                               "the smallest enclosing circle is undefined with site " + std::to_string(i) +
+                                   " on Omega: every centre on a side holding the other sites is at distance +inf "
+                                   "from it, so no circle is the smallest");
+  const Sign sigma = sign_of(points[0].w());
+  for (Index i = 1; i < n; ++i)
+    if (sign_of(points[i].w()) != sigma) {
+      const Index f = sigma == POSITIVE ? 0 : i, b = sigma == POSITIVE ? i : 0;
+      throw UndefinedEnclosing(f, b,
+                               "the smallest enclosing circle is undefined for sites on both sides (front site " +
+                                   std::to_string(f) + ", back site " + std::to_string(b) +
+                                   "): every proper centre is beyond infinity from a side, and moving it away "
+                                   "shrinks that radius towards +inf without end");
+    }
+  // Back sites: their drawn positions (antipodes), and the antipode of their answer.
+  std::vector<Point> P(points.begin(), points.end());
+  if (sigma == NEGATIVE)
+    for (Point& p : P) p = antipode(p);
+  const Disk d = welzl(P, shuffled(n));
+  EnclosingCircle c;
+  c.support.assign(d.s.begin(), d.s.begin() + d.k);
+  std::sort(c.support.begin(), c.support.end());
+  c.center = center_of(P, d);
+  c.radius2 = squared_radius(c.center, to_exact(P[d.s[0]]));
+  for (Index i = 0; i < n; ++i)
+    if (side(P, d, i) == ZERO) c.on_circle.push_back(i);
+  if (sigma == NEGATIVE) c.center = antipode(c.center);
+  return c;
+}
+
+}  // namespace t2
