@@ -15,11 +15,23 @@ namespace {
 
 using Index = EnclosingCircle::Index;
 
-/// A circle of the algorithm: the sites that define it (1, 2 or 3 of them).
+/// A circle of the algorithm: the sites that define it (1, 2 or 3 of them), as points, so that
+/// a test reads no other memory, and as input indices. Three sites are kept counter-clockwise
+/// (in the T² orientation), so that in_circle alone says inside (POSITIVE) or out.
 struct Disk {
+  std::array<Point, 3> p{Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0)};
   std::array<Index, 3> s{};
   int k = 0;  ///< how many sites: 1 a point, 2 a diameter, 3 a circumcircle
 };
+
+/// The circle with diameter ab.
+Disk diameter(const Point& a, Index i, const Point& b, Index j) { return Disk{{a, b, a}, {i, j, i}, 2}; }
+
+/// The circle through a, b, c (not collinear), counter-clockwise.
+Disk circumcircle(const Point& a, Index i, const Point& b, Index j, const Point& c, Index k) {
+  if (orient(a, b, c) == NEGATIVE) return Disk{{a, c, b}, {i, k, j}, 3};
+  return Disk{{a, b, c}, {i, j, k}, 3};
+}
 
 /// The side of p relative to the closed disk with diameter ab, for proper points on one side:
 /// POSITIVE inside, ZERO on the circle, NEGATIVE outside. It is −sign((P − A)·(P − B)), whose
@@ -32,38 +44,43 @@ Sign in_diameter_disk(const Point& a, const Point& b, const Point& p) {
       a, b, p);
 }
 
-/// The side of P[i] relative to the closed disk of d (POSITIVE inside, ZERO on, NEGATIVE out).
-Sign side(const std::vector<Point>& P, const Disk& d, Index i) {
-  if (d.k == 3) return in_disk(P[d.s[0]], P[d.s[1]], P[d.s[2]], P[i]);
-  if (d.k == 2) return in_diameter_disk(P[d.s[0]], P[d.s[1]], P[i]);
-  return P[i] == P[d.s[0]] ? ZERO : NEGATIVE;
+/// The side of q relative to the closed disk of d (POSITIVE inside, ZERO on, NEGATIVE out).
+Sign side(const Disk& d, const Point& q) {
+  if (d.k == 3) return in_circle(d.p[0], d.p[1], d.p[2], q);
+  if (d.k == 2) return in_diameter_disk(d.p[0], d.p[1], q);
+  return q == d.p[0] ? ZERO : NEGATIVE;
 }
 
-/// The order of the algorithm: 0 … n−1 shuffled by Fisher–Yates with a fixed seed (header).
-std::vector<Index> shuffled(Index n) {
-  std::vector<Index> o(n);
-  for (Index i = 0; i < n; ++i) o[i] = i;
+/// The points in the order of the algorithm, with their input indices: a Fisher–Yates shuffle
+/// with a fixed seed (header). The points themselves are moved, so the scans read memory in order.
+void shuffle(std::vector<Point>& P, std::vector<Index>& id) {
+  const Index n = static_cast<Index>(P.size());
+  id.resize(n);
+  for (Index i = 0; i < n; ++i) id[i] = i;
   std::mt19937_64 rng(0x5ec'c1'2c1e);
-  for (Index i = n; i > 1; --i) std::swap(o[i - 1], o[static_cast<Index>(rng() % i)]);
-  return o;
+  for (Index i = n; i > 1; --i) {
+    const Index r = static_cast<Index>(rng() % i);
+    std::swap(P[i - 1], P[r]);
+    std::swap(id[i - 1], id[r]);
+  }
 }
 
 //> welzl
-/// Welzl's algorithm on the front points P (de Berg et al.'s three loops): the disk of the
-/// first i sites of the order, and when site o[i] is outside it, the smallest disk with o[i]
-/// on its boundary, found by the same scan with one, then two sites fixed.
-Disk welzl(const std::vector<Point>& P, const std::vector<Index>& o) {
-  const Index n = static_cast<Index>(o.size());
-  if (n == 1) return Disk{{o[0], 0, 0}, 1};
-  Disk d{{o[0], o[1], 0}, 2};  // the circle with diameter o[0] o[1]
+/// Welzl's algorithm on the front points P, in their order (de Berg et al.'s three loops): the
+/// disk of the first i sites, and when site i is outside it, the smallest disk with site i on
+/// its boundary, found by the same scan with one, then two sites fixed.
+Disk welzl(const std::vector<Point>& P, const std::vector<Index>& id) {
+  const Index n = static_cast<Index>(P.size());
+  if (n == 1) return Disk{{P[0], P[0], P[0]}, {id[0], id[0], id[0]}, 1};
+  Disk d = diameter(P[0], id[0], P[1], id[1]);
   for (Index i = 2; i < n; ++i) {
-    if (side(P, d, o[i]) != NEGATIVE) continue;
-    d = Disk{{o[i], o[0], 0}, 2};  // o[i] is on the circle of the first i + 1 sites
+    if (side(d, P[i]) != NEGATIVE) continue;
+    d = diameter(P[i], id[i], P[0], id[0]);  // site i is on the circle of the first i + 1 sites
     for (Index j = 1; j < i; ++j) {
-      if (side(P, d, o[j]) != NEGATIVE) continue;
-      d = Disk{{o[i], o[j], 0}, 2};  // and so is o[j]
+      if (side(d, P[j]) != NEGATIVE) continue;
+      d = diameter(P[i], id[i], P[j], id[j]);  // and so is site j
       for (Index k = 0; k < j; ++k)
-        if (side(P, d, o[k]) == NEGATIVE) d = Disk{{o[i], o[j], o[k]}, 3};  // and o[k]
+        if (side(d, P[k]) == NEGATIVE) d = circumcircle(P[i], id[i], P[j], id[j], P[k], id[k]);  // and site k
     }
   }
   return d;
@@ -71,13 +88,13 @@ Disk welzl(const std::vector<Point>& P, const std::vector<Index>& o) {
 //<
 
 /// The centre of d with exact integers and no division, reduced (no common factor).
-ExactPoint center_of(const std::vector<Point>& P, const Disk& d) {
-  ExactPoint c = to_exact(P[d.s[0]]);
+ExactPoint center_of(const Disk& d) {
+  ExactPoint c = to_exact(d.p[0]);
   if (d.k == 2) {
-    const ExactPoint a = to_exact(P[d.s[0]]), b = to_exact(P[d.s[1]]);
+    const ExactPoint a = to_exact(d.p[0]), b = to_exact(d.p[1]);
     c = mix(Integer(abs(b.w())), a, Integer(abs(a.w())), b);  // the midpoint, on their side
   } else if (d.k == 3) {
-    c = circle_through(to_exact(P[d.s[0]]), to_exact(P[d.s[1]]), to_exact(P[d.s[2]])).center();
+    c = circle_through(to_exact(d.p[0]), to_exact(d.p[1]), to_exact(d.p[2])).center();
   }
   Integer g;
   mpz_gcd(g.get_mpz_t(), c.w().get_mpz_t(), c.x().get_mpz_t());
@@ -121,14 +138,17 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
   std::vector<Point> P(points.begin(), points.end());
   if (sigma == NEGATIVE)
     for (Point& p : P) p = antipode(p);
-  const Disk d = welzl(P, shuffled(n));
+  std::vector<Index> id;
+  shuffle(P, id);
+  const Disk d = welzl(P, id);
   EnclosingCircle c;
   c.support.assign(d.s.begin(), d.s.begin() + d.k);
   std::sort(c.support.begin(), c.support.end());
-  c.center = center_of(P, d);
-  c.radius2 = squared_radius(c.center, to_exact(P[d.s[0]]));
+  c.center = center_of(d);
+  c.radius2 = squared_radius(c.center, to_exact(d.p[0]));
   for (Index i = 0; i < n; ++i)
-    if (side(P, d, i) == ZERO) c.on_circle.push_back(i);
+    if (side(d, P[i]) == ZERO) c.on_circle.push_back(id[i]);
+  std::sort(c.on_circle.begin(), c.on_circle.end());
   if (sigma == NEGATIVE) c.center = antipode(c.center);
   return c;
 }
