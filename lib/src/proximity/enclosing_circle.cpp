@@ -33,16 +33,19 @@ Disk circumcircle(const Point& a, Index i, const Point& b, Index j, const Point&
   return Disk{{a, b, c}, {i, j, k}, 3};
 }
 
-/// The side of p relative to the closed disk with diameter ab, for proper points on one side:
-/// POSITIVE inside, ZERO on the circle, NEGATIVE outside. It is −sign((P − A)·(P − B)), whose
-/// homogeneous form Σ (p·a_w − a·p_w)(p·b_w − b·p_w) differs by the factor p_w²·a_w·b_w > 0.
+//> in-diameter-disk
+/// The side of p relative to the closed disk with diameter ab (proper points of one
+/// side): POSITIVE inside, ZERO on the circle, NEGATIVE outside. It is
+/// −sign((P − A)·(P − B)); the homogeneous form below differs by p_w²·a_w·b_w > 0.
 Sign in_diameter_disk(const Point& a, const Point& b, const Point& p) {
   return -sign_of_poly(
       [](const auto& a, const auto& b, const auto& p) {
-        return (p.x * a.w - a.x * p.w) * (p.x * b.w - b.x * p.w) + (p.y * a.w - a.y * p.w) * (p.y * b.w - b.y * p.w);
+        return (p.x * a.w - a.x * p.w) * (p.x * b.w - b.x * p.w) +
+               (p.y * a.w - a.y * p.w) * (p.y * b.w - b.y * p.w);
       },
       a, b, p);
 }
+//< in-diameter-disk
 
 /// The side of q relative to the closed disk of d (POSITIVE inside, ZERO on, NEGATIVE out).
 Sign side(const Disk& d, const Point& q) {
@@ -66,26 +69,28 @@ void shuffle(std::vector<Point>& P, std::vector<Index>& id) {
 }
 
 //> welzl
-/// Welzl's algorithm on the front points P, in their order (de Berg et al.'s three loops): the
-/// disk of the first i sites, and when site i is outside it, the smallest disk with site i on
-/// its boundary, found by the same scan with one, then two sites fixed.
+/// Welzl's algorithm on the front points P, in their order (de Berg et al.'s three
+/// loops): the disk of the first i sites; when site i is outside it, the smallest
+/// disk with site i on its boundary, found by the same scan with one, then two sites
+/// fixed. id[i] is the input index of P[i].
 Disk welzl(const std::vector<Point>& P, const std::vector<Index>& id) {
   const Index n = static_cast<Index>(P.size());
   if (n == 1) return Disk{{P[0], P[0], P[0]}, {id[0], id[0], id[0]}, 1};
   Disk d = diameter(P[0], id[0], P[1], id[1]);
   for (Index i = 2; i < n; ++i) {
     if (side(d, P[i]) != NEGATIVE) continue;
-    d = diameter(P[i], id[i], P[0], id[0]);  // site i is on the circle of the first i + 1 sites
+    d = diameter(P[i], id[i], P[0], id[0]);  // site i is on the circle
     for (Index j = 1; j < i; ++j) {
       if (side(d, P[j]) != NEGATIVE) continue;
       d = diameter(P[i], id[i], P[j], id[j]);  // and so is site j
       for (Index k = 0; k < j; ++k)
-        if (side(d, P[k]) == NEGATIVE) d = circumcircle(P[i], id[i], P[j], id[j], P[k], id[k]);  // and site k
+        if (side(d, P[k]) == NEGATIVE)  // and site k
+          d = circumcircle(P[i], id[i], P[j], id[j], P[k], id[k]);
     }
   }
   return d;
 }
-//<
+//< welzl
 
 /// The centre of d with exact integers and no division, reduced (no common factor).
 ExactPoint center_of(const Disk& d) {
