@@ -224,6 +224,19 @@ TEST(EnclosingCircle, Undefined) {
     EXPECT_EQ(e.site, 2u) << "the front site";
     EXPECT_EQ(e.other, 0u) << "the back site";
   }
+  try {  // both sides first, whatever is on Ω
+    smallest_enclosing_circle(std::vector<Point>{Point(0, 1, 0), Point(-1, 0, 0), Point(3, 1, 1), Point(1, 0, 0)});
+    FAIL();
+  } catch (const UndefinedEnclosing& e) {
+    EXPECT_EQ(e.site, 2u);
+    EXPECT_EQ(e.other, 1u);
+  }
+  try {  // only Ω
+    smallest_enclosing_circle(std::vector<Point>{Point(0, 1, 0), Point(0, 0, 1)});
+    FAIL();
+  } catch (const UndefinedEnclosing& e) {
+    EXPECT_EQ(e.site, 0u);
+  }
   // p and its antipode: one drawn position, but no circle of T² holds both.
   EXPECT_THROW(smallest_enclosing_circle(std::vector<Point>{Point(1, 3, 4), Point(-1, -3, -4)}), UndefinedEnclosing);
   EXPECT_THROW(smallest_enclosing_circle(std::vector<Point>{}), BadInput);

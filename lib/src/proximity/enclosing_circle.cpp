@@ -122,23 +122,22 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
   if (points.size() >= std::numeric_limits<Index>::max())
     throw BadInput("the smallest enclosing circle takes at most 2^32 - 2 sites");
   const Index n = static_cast<Index>(points.size());
-  // The definition of T² (header): proper sites, all on one side.
-  for (Index i = 0; i < n; ++i)
-    if (points[i].w() == 0)
-      throw UndefinedEnclosing(i, i,
-                               "the smallest enclosing circle is undefined with site " + std::to_string(i) +
-                                   " on Omega: every centre on a side holding the other sites is at distance +inf "
-                                   "from it, so no circle is the smallest");
-  const Sign sigma = sign_of(points[0].w());
-  for (Index i = 1; i < n; ++i)
-    if (sign_of(points[i].w()) != sigma) {
-      const Index f = sigma == POSITIVE ? 0 : i, b = sigma == POSITIVE ? i : 0;
-      throw UndefinedEnclosing(f, b,
-                               "the smallest enclosing circle is undefined for sites on both sides (front site " +
-                                   std::to_string(f) + ", back site " + std::to_string(b) +
-                                   "): every proper centre is beyond infinity from a side, and moving it away "
-                                   "shrinks that radius towards +inf without end");
-    }
+  // The definition of T² (header): proper sites, all on one side. Sites on both sides first
+  // (an Ω site changes nothing there), then a site on Ω.
+  Index front = n, back = n, omega = n;
+  for (Index i = n; i-- > 0;) (points[i].w() > 0 ? front : points[i].w() < 0 ? back : omega) = i;
+  if (front < n && back < n)
+    throw UndefinedEnclosing(front, back,
+                             "the smallest enclosing circle is undefined for sites on both sides (front site " +
+                                 std::to_string(front) + ", back site " + std::to_string(back) +
+                                 "): every proper centre is beyond infinity from a side, and moving it away "
+                                 "shrinks that radius towards +inf without end");
+  if (omega < n)
+    throw UndefinedEnclosing(omega, omega,
+                             "the smallest enclosing circle is undefined with site " + std::to_string(omega) +
+                                 " on Omega: every centre on the side of the proper sites (on either side if there "
+                                 "are none) has radius +inf, so no circle is the smallest");
+  const Sign sigma = front < n ? POSITIVE : NEGATIVE;
   // Back sites: their drawn positions (antipodes), and the antipode of their answer.
   std::vector<Point> P(points.begin(), points.end());
   if (sigma == NEGATIVE)

@@ -14,13 +14,15 @@
 ///    front sites, exactly the planar answer; for back sites, the antipode of the planar
 ///    answer of their drawn positions). Its disk is in_disk's (incircle.hpp): points of side σ
 ///    only.
-///  - *A site on Ω:* every proper centre on a side holding all the proper sites is at +∞ from
-///    it, and so has radius +∞ (beyond infinity from a centre on the other side): the minimum
-///    +∞ is reached by a whole side of centres, and no circle is *the* smallest. Undefined.
-///  - *Sites on both sides:* every proper centre has a radius beyond infinity, [−1, t] with
-///    t = min over the sites s of the other side of |Z − S̄|² (drawn positions). Moving the
-///    centre away makes t grow without bound: the radius decreases towards +∞ and never reaches
-///    it. No minimum: undefined.
+///  - *Sites on both sides (and maybe on Ω):* every proper centre has a radius beyond
+///    infinity, [−1, t] with t = min over the sites s of the other side of |Z − S̄|² (drawn
+///    positions). Moving the centre away makes t grow without bound: the radius decreases
+///    towards +∞ and never reaches it. No minimum: undefined.
+///  - *A site on Ω, the proper sites on one side σ or none:* a centre on side σ (on either
+///    side when there are no proper sites) is at +∞ from the Ω site and finite from the
+///    others, so its radius is +∞; a centre on side −σ has a radius beyond infinity. The
+///    minimum +∞ is reached by a whole side of centres, and no circle is *the* smallest.
+///    Undefined.
 /// Such sets can lie in an open hemisphere of the sphere, but no disk of T² with a proper
 /// centre holds them with a least radius. Note that the homogeneous inequality
 /// (x − X·w)² + (y − Y·w)² ≤ r²w² of a Euclidean disk holds for p and ¬p alike: it describes a
@@ -29,7 +31,8 @@
 /// distances, and therefore in_disk.
 ///
 /// **Exactness.** Every decision is the sign of a polynomial in the input coordinates, through
-/// the filtered predicates: `in_disk` for the circle through three sites, and for the circle
+/// the filtered predicates: `in_circle` for the circle through three sites (kept
+/// counter-clockwise, so that its sign is in_disk's), and for the circle
 /// with diameter ab the sign of (P − A)·(P − B), read homogeneously as
 /// Σ (p·a_w − a·p_w)(p·b_w − b·p_w) (the positive factor p_w²a_wb_w dropped). No centre or
 /// radius is constructed in doubles; the centre of the answer is built once, with GMP integers
@@ -66,8 +69,8 @@ struct EnclosingCircle {
   std::vector<Index> on_circle;
 };
 
-/// The smallest enclosing circle is undefined for these sites (file comment): `site` is a site
-/// on Ω, or `site` and `other` are a front and a back site.
+/// The smallest enclosing circle is undefined for these sites (file comment): `site` and
+/// `other` are a front and a back site, or else `site` = `other` is a site on Ω.
 class UndefinedEnclosing : public Undefined {
  public:
   /// @param site, other the sites the rule names (other = site when one suffices)
@@ -79,7 +82,8 @@ class UndefinedEnclosing : public Undefined {
 
 /// The smallest enclosing circle of `points` by Welzl's algorithm (file comment): expected
 /// O(n) predicates for any input order (the shuffle), O(n) memory. Throws `BadInput` for no
-/// sites or more than 2³² − 1, `UndefinedEnclosing` for a site on Ω or sites on both sides.
+/// sites or more than 2³² − 2, `UndefinedEnclosing` for sites on both sides (the first front
+/// and the first back site) or else a site on Ω (the first).
 EnclosingCircle smallest_enclosing_circle(std::span<const Point> points);
 
 }  // namespace t2
