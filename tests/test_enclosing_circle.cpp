@@ -99,6 +99,23 @@ TEST(EnclosingCircle, BruteForce) {
   }
 }
 
+// Coordinates far outside the filters' range (2^±600 apart), against brute force.
+TEST(EnclosingCircle, ExtremeCoordinates) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> c(-6, 6), size(2, 9), e(0, 2);
+  const int exps[3] = {-500, 0, 500};
+  for (int round = 0; round < 150; ++round) {
+    const int n = size(rng), sign = round % 2 ? -1 : 1, ex = exps[e(rng)], wx = exps[e(rng)];
+    std::vector<Point> P;
+    for (int k = 0; k < n; ++k) {  // drawn at 2^(ex - wx)·(x, y), with weights of other scales
+      const double w = sign * std::ldexp(1.0 + (k % 3), wx);
+      P.emplace_back(w, std::ldexp(c(rng), ex) * (1 + k % 3), std::ldexp(c(rng), ex) * (1 + k % 3));
+    }
+    SCOPED_TRACE(round);
+    expect_circle(P, smallest_enclosing_circle(P), brute(P));
+  }
+}
+
 // Larger front sets against CGAL's Min_circle_2 on the exact kernel.
 TEST(EnclosingCircle, Cgal) {
   for (gen::Kind k : {gen::Kind::uniform, gen::Kind::disk, gen::Kind::normal, gen::Kind::kuzmin, gen::Kind::circle,
