@@ -225,6 +225,33 @@ TEST(EnclosingCircle, OrderAndRepeats) {
   EXPECT_EQ(a.radius2, b.radius2);
 }
 
+// The traced run (t2 animate sec) gives the same circle; its last disk is the support, and a
+// new disk follows exactly the tests that found a site outside.
+TEST(EnclosingCircle, Trace) {
+  gen::Options o;
+  o.n = 300;
+  const std::vector<Point> P = gen::points(gen::Kind::disk, o);
+  std::vector<std::size_t> last;
+  int disks = 0, outside = 0, tests = 0;
+  const EnclosingCircle c = smallest_enclosing_circle(P, [&](const trace::Report& r) {
+    if (r.event == trace::Event::enclose) {
+      last.assign(r.points().begin(), r.points().end());
+      ++disks;
+    } else {
+      ASSERT_EQ(r.event, trace::Event::in_disk);
+      ++tests;
+      outside += r.sign == NEGATIVE;
+    }
+  });
+  const EnclosingCircle plain = smallest_enclosing_circle(P);
+  EXPECT_EQ(c.support, plain.support);
+  EXPECT_EQ(c.center, plain.center);
+  std::sort(last.begin(), last.end());
+  EXPECT_EQ(last, std::vector<std::size_t>(c.support.begin(), c.support.end()));
+  EXPECT_EQ(disks, outside + 1);
+  EXPECT_GE(tests, 298);
+}
+
 // Ω and both sides: UndefinedEnclosing naming the sites; no sites: BadInput.
 TEST(EnclosingCircle, Undefined) {
   try {

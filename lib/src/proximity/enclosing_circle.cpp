@@ -68,24 +68,45 @@ void shuffle(std::vector<Point>& P, std::vector<Index>& id) {
   }
 }
 
+/// Is site i (at p) strictly outside d? Told to the hook with the test's sign.
+template <class H>
+bool outside(const Disk& d, const Point& p, Index i, H& hook) {
+  const Sign s = side(d, p);
+  tell(hook, trace::Event::in_disk, {std::size_t(i)}, {}, s);
+  return s == NEGATIVE;
+}
+
+/// d, told to the hook as the new disk.
+template <class H>
+Disk enclose(const Disk& d, H& hook) {
+  tell(hook, [&] {
+    trace::Report r;
+    r.event = trace::Event::enclose;
+    for (int m = 0; m < d.k; ++m) r.at[m] = d.s[m];
+    return r;
+  });
+  return d;
+}
+
 //> welzl
 /// Welzl's algorithm on the front points P, in their order (de Berg et al.'s three
 /// loops): the disk of the first i sites; when site i is outside it, the smallest
 /// disk with site i on its boundary, found by the same scan with one, then two sites
-/// fixed. id[i] is the input index of P[i].
-Disk welzl(const std::vector<Point>& P, const std::vector<Index>& id) {
+/// fixed. id[i] is the input index of P[i]; `hook` hears every test and every disk.
+template <class H>
+Disk welzl(const std::vector<Point>& P, const std::vector<Index>& id, H& hook) {
   const Index n = static_cast<Index>(P.size());
-  if (n == 1) return Disk{{P[0], P[0], P[0]}, {id[0], id[0], id[0]}, 1};
-  Disk d = diameter(P[0], id[0], P[1], id[1]);
+  if (n == 1) return enclose(Disk{{P[0], P[0], P[0]}, {id[0], id[0], id[0]}, 1}, hook);
+  Disk d = enclose(diameter(P[0], id[0], P[1], id[1]), hook);
   for (Index i = 2; i < n; ++i) {
-    if (side(d, P[i]) != NEGATIVE) continue;
-    d = diameter(P[i], id[i], P[0], id[0]);  // site i is on the circle
+    if (!outside(d, P[i], id[i], hook)) continue;
+    d = enclose(diameter(P[i], id[i], P[0], id[0]), hook);  // site i is on the circle
     for (Index j = 1; j < i; ++j) {
-      if (side(d, P[j]) != NEGATIVE) continue;
-      d = diameter(P[i], id[i], P[j], id[j]);  // and so is site j
+      if (!outside(d, P[j], id[j], hook)) continue;
+      d = enclose(diameter(P[i], id[i], P[j], id[j]), hook);  // and so is site j
       for (Index k = 0; k < j; ++k)
-        if (side(d, P[k]) == NEGATIVE)  // and site k
-          d = circumcircle(P[i], id[i], P[j], id[j], P[k], id[k]);
+        if (outside(d, P[k], id[k], hook))  // and site k
+          d = enclose(circumcircle(P[i], id[i], P[j], id[j], P[k], id[k]), hook);
     }
   }
   return d;
@@ -115,9 +136,9 @@ Rational squared_radius(const ExactPoint& c, const ExactPoint& a) {
   return r;
 }
 
-}  // namespace
-
-EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
+/// smallest_enclosing_circle, telling `hook` (NoTrace: nothing, and no trace code).
+template <class H>
+EnclosingCircle enclosing_circle(std::span<const Point> points, H& hook) {
   if (points.empty()) throw BadInput("the smallest enclosing circle needs at least one site");
   if (points.size() >= std::numeric_limits<Index>::max())
     throw BadInput("the smallest enclosing circle takes at most 2^32 - 2 sites");
@@ -144,7 +165,7 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
     for (Point& p : P) p = antipode(p);
   std::vector<Index> id;
   shuffle(P, id);
-  const Disk d = welzl(P, id);
+  const Disk d = welzl(P, id, hook);
   EnclosingCircle c;
   c.support.assign(d.s.begin(), d.s.begin() + d.k);
   std::sort(c.support.begin(), c.support.end());
@@ -155,6 +176,18 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
   std::sort(c.on_circle.begin(), c.on_circle.end());
   if (sigma == NEGATIVE) c.center = antipode(c.center);
   return c;
+}
+
+}  // namespace
+
+EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
+  NoTrace none;
+  return enclosing_circle(points, none);
+}
+
+EnclosingCircle smallest_enclosing_circle(std::span<const Point> points,
+                                          const std::function<void(const trace::Report&)>& hook) {
+  return enclosing_circle(points, hook);
 }
 
 }  // namespace t2

@@ -45,6 +45,7 @@
 /// on the order.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -52,6 +53,7 @@
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -85,5 +87,11 @@ class UndefinedEnclosing : public Undefined {
 /// sites or more than 2³² − 2, `UndefinedEnclosing` for sites on both sides (the first front
 /// and the first back site) or else a site on Ω (the first).
 EnclosingCircle smallest_enclosing_circle(std::span<const Point> points);
+
+/// The same, telling `hook` (trace/hook.hpp) every disk (`Event::enclose`, the defining sites)
+/// and every test of a site against it (`Event::in_disk`, with its sign), in input indices.
+/// Only this overload carries trace code; the one above has none.
+EnclosingCircle smallest_enclosing_circle(std::span<const Point> points,
+                                          const std::function<void(const trace::Report&)>& hook);
 
 }  // namespace t2
