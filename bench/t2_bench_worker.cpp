@@ -15,8 +15,9 @@
 // PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
 // delaunay, triangulation, hull3d, ...) and an implementation of it: a t2 algorithm registered
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
-// cgal (hull, delaunay, hull3d), qhull (hull, hull3d), raw and exact (hull, delaunay: t2's own
-// code on plain double predicates, inexact, or on exact arithmetic at every call, no filter).
+// cgal (hull, delaunay, hull3d, intersect, locate, sec), qhull (hull, hull3d), raw and exact
+// (hull, delaunay: t2's own code on plain double predicates, inexact, or on exact arithmetic at
+// every call, no filter).
 // A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
 // segments (n segments with exactly n crossings, t2::gen::segments).
 // INPUT: a point kind of `t2 gen` (uniform, disk, kuzmin, circle, grid, ...), normal (one
@@ -28,6 +29,8 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Min_circle_2.h>
+#include <CGAL/Min_circle_2_traits_2.h>
 #include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/ch_akl_toussaint.h>
@@ -271,6 +274,20 @@ Run locate_peer(const std::string& impl, const std::vector<t2::Point>& P) {
   };
 }
 
+// CGAL's Min_circle_2 on the exact kernel (Epeck: its circumcentres are constructed exactly),
+// randomized (its own shuffle, CGAL's default random): the number of support points.
+Run sec_peer(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "cgal") return nullptr;
+  using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+  auto C = std::make_shared<std::vector<Epeck::Point_2>>();
+  C->reserve(P.size());
+  for (const auto& p : P) C->emplace_back(p.x(), p.y());  // w = 1 (make_input)
+  return [C] {
+    CGAL::Min_circle_2<CGAL::Min_circle_2_traits_2<Epeck>> mc(C->begin(), C->end(), true);
+    return static_cast<std::size_t>(mc.number_of_support_points());
+  };
+}
+
 // The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
 Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
   namespace reg = t2cli::algorithms;
@@ -283,6 +300,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "hull3d"   ? hull3d_peer(impl, in.points3)
           : problem == "intersect" ? intersect_peer(impl, in.segments)
           : problem == "locate"   ? locate_peer(impl, in.points)
+          : problem == "sec"      ? sec_peer(impl, in.points)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;

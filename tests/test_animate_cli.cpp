@@ -187,7 +187,7 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   write("line.t2", "0 0\n1 1\n2 2\n");
   write("none.t2", "# nothing\n");
   for (const char* file : {"one.t2", "line.t2", "none.t2"})
-    for (const char* algo : {"jarvis", "graham", "merge", "triangulate", "triangulate-t2", "delaunay"}) {
+    for (const char* algo : {"jarvis", "graham", "merge", "triangulate", "triangulate-t2", "delaunay", "sec"}) {
       const Result r = t2(std::string("animate ") + algo + " " + file + " -o x.html");
       EXPECT_EQ(r.status, 0) << algo << " " << file << r.err;
       EXPECT_TRUE(has(slurp(dir_ / "x.html"), "\"kind\":\"answer\"")) << algo << " " << file;
@@ -196,14 +196,14 @@ TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   EXPECT_EQ(numbers(last_step_field(slurp(dir_ / "x.html"), "chain")), (std::vector<std::size_t>{0, 2}));
 }
 
-// The "Watch it" commands of chapters 06-10 name an algorithm of t2 animate and a valid data
+// The "Watch it" commands of chapters 06-10 and 12 name an algorithm of t2 animate and a valid data
 // file; under the long label they run as printed, from the top of the repository (here a folder
 // whose data/ is the repository's), and write their pages (some seconds of CPU in all).
 TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
   fs::create_directory_symlink(fs::path(T2_SOURCE_DIR) / "data", dir_ / "data");
   const std::regex command("t2 animate ([a-z0-9-]+) (data/examples/[a-z0-9-]+\\.t2) -o ([a-z]+\\.html)");
   int commands = 0;
-  for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay"}) {
+  for (const char* ch : {"06-convex-hull", "07-calipers", "09-triangulation", "10-delaunay", "12-proximity"}) {
     std::string md;  // the chapter's text: chapter.md, then its later parts chapter-2.md ...
     for (int k = 1;; ++k) {
       const fs::path part = fs::path(T2_SOURCE_DIR) / "chapters" / ch /
@@ -215,7 +215,7 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
       EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge" || algo == "triangulate" ||
-                  algo == "triangulate-t2" || algo == "delaunay")
+                  algo == "triangulate-t2" || algo == "delaunay" || algo == "sec")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

@@ -3,10 +3,12 @@
 
 #include <t2/draw.hpp>
 #include <t2/gen/generate.hpp>
+#include <t2/proximity/enclosing_circle.hpp>
 #include <t2/proximity/nearest_neighbors.hpp>
 #include <t2/proximity/spanning_tree.hpp>
 #include <t2/triangulation/delaunay.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -72,6 +74,37 @@ void figures(const std::filesystem::path& dir) {
       f.segment(P[i], P[nearest[i]], dr::Style().color(pal::blue).width(1.6).arrow());
     sites(f, P, true);
     out.save(f, "ann-t2", wide, aside);
+  }
+  {  // The smallest enclosing circle of front sites, and that of back sites: each on its side.
+    t2::gen::Options o;
+    o.n = 50;
+    o.seed = 25;
+    const auto D = t2::gen::points(t2::gen::Kind::disk, o);
+    std::vector<Point> F, B;
+    for (std::size_t i = 0; i < D.size(); ++i) {
+      const double x = D[i].x() / D[i].w(), y = D[i].y() / D[i].w();
+      if (i % 3 != 0)
+        F.push_back(Point::cartesian(1.1 * x + 1.3, 0.8 * y + 0.3));
+      else  // drawn at (0.9 x - 1.6, 0.9 y - 0.4), on the back
+        B.push_back(Point(-1, -(0.9 * x - 1.6), -(0.9 * y - 0.4)));
+    }
+    dr::Figure f;
+    for (const auto* S : {&F, &B}) {
+      const t2::EnclosingCircle c = t2::smallest_enclosing_circle(*S);
+      const dr::Style st = dr::Style().color(S == &F ? pal::red : pal::blue).width(2);
+      f.add(t2::ExactCircle(c.center, t2::to_exact((*S)[c.support[0]])), st);
+      f.add(t2::to_double(c.center), dr::Style().color(S == &F ? pal::red : pal::blue).size(3));
+      for (std::size_t i = 0; i < S->size(); ++i) {
+        const bool on = std::binary_search(c.on_circle.begin(), c.on_circle.end(), i);
+        f.add((*S)[i], dr::Style().size(on ? 3.5 : 2));
+      }
+    }
+    dr::PlaneView pv;
+    pv.half_width = 3.2;
+    dr::SphereView side_on;  // both sets lie towards +x, one above Ω and one below
+    side_on.lat = 5;
+    side_on.lon = 10;
+    out.save(f, "sec-t2", pv, side_on);
   }
   std::cerr << out.summary() << "\n";
 }

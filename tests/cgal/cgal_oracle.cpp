@@ -4,6 +4,8 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Min_circle_2.h>
+#include <CGAL/Min_circle_2_traits_2.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -145,24 +147,38 @@ std::vector<Triangle3> hull_3(const std::vector<Point3>& P) {
   return out;
 }
 
+namespace {
+
+// CGAL's exact number as a canonical rational.
+Rational rational(const Epeck::FT& v) {
+  std::ostringstream os;
+  os << CGAL::exact(v);  // "n" or "n/d", whichever exact number type CGAL was built with
+  Rational r(os.str());
+  r.canonicalize();
+  return r;
+}
+
+}  // namespace
+
 std::vector<std::array<Rational, 2>> intersection_points_2(const std::vector<Segment>& segments) {
   std::vector<Epeck::Segment_2> in;
   in.reserve(segments.size());
   for (const Segment& s : segments) in.emplace_back(exact(s.source()), exact(s.target()));
   std::vector<Epeck::Point_2> out;
   CGAL::compute_intersection_points(in.begin(), in.end(), std::back_inserter(out), false);
-  auto rational = [](const Epeck::FT& v) {
-    std::ostringstream os;
-    os << CGAL::exact(v);  // "n" or "n/d", whichever exact number type CGAL was built with
-    Rational r(os.str());
-    r.canonicalize();
-    return r;
-  };
   std::vector<std::array<Rational, 2>> pts;
   for (const auto& p : out) pts.push_back({rational(p.x()), rational(p.y())});
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   return pts;
+}
+
+MinCircle min_circle_2(const std::vector<Point>& P) {
+  std::vector<Epeck::Point_2> in;
+  for (const auto& p : P) in.push_back(exact(p));
+  CGAL::Min_circle_2<CGAL::Min_circle_2_traits_2<Epeck>> mc(in.begin(), in.end(), true);
+  const auto& c = mc.circle();
+  return {{rational(c.center().x()), rational(c.center().y())}, rational(c.squared_radius())};
 }
 
 }  // namespace t2::testing::cgal

@@ -56,4 +56,13 @@ std::vector<Triangle3> hull_3(const std::vector<Point3>& P);
 /// points where segments meet, as exact Cartesian (X, Y), sorted, each once.
 std::vector<std::array<Rational, 2>> intersection_points_2(const std::vector<Segment>& segments);
 
+/// The smallest enclosing circle of front points by CGAL::Min_circle_2 (Min_circle_2_traits_2
+/// on the exact kernel Epeck, each point (x/w, y/w) as exact rationals): its centre and squared
+/// radius, exactly.
+struct MinCircle {
+  std::array<Rational, 2> center;  ///< (X, Y)
+  Rational radius2;                ///< the squared radius
+};
+MinCircle min_circle_2(const std::vector<Point>& P);
+
 }  // namespace t2::testing::cgal

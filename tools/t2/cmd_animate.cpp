@@ -59,8 +59,8 @@ Action setup(Arguments& app) {
   app.add_option("-o,--output", o->out, "the HTML page to write (atomically)")->required()->type_name("OUT");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
-      "points; delaunay given points off the front side); 3 undefined: the points have no hull\n"
-      "(no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
+      "points; delaunay or sec given points off the front side); 3 undefined: the points have no\n"
+      "hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
   return [o] { return animate(*o); };
 }
 

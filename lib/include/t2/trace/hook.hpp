@@ -34,7 +34,8 @@ class Triangulation;
 
 namespace trace {
 
-/// What happened. Hull algorithms report the first seven, triangulations the rest.
+/// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
+/// Welzl's smallest enclosing circle the last two.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -57,6 +58,9 @@ enum class Event {
   in_circle,      ///< is at[3] inside the circle of at[0..2]? `sign` answers (POSITIVE: inside)
   replace,        ///< at[0] took v∞'s place in the faces `face_list`, in order around it
   done,           ///< the algorithm is finished; `tr` is its result before renumbering
+  enclose,        ///< the disk is now the one of at[0..2]: a circumcircle, a diameter (at[2]
+                  ///< none) or one point (at[1] none)
+  in_disk,        ///< is at[0] in the last `enclose`'s closed disk? `sign` answers (POSITIVE in)
 };
 
 /// One event, as the algorithm reports it (see the file comment).
