@@ -1,6 +1,5 @@
 // t2 sec: the smallest enclosing circle of a scene's points in T²
 // (t2/proximity/enclosing_circle.hpp, Welzl's algorithm).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
@@ -44,7 +43,7 @@ int run(const ProximityOptions& o) {
   return kOk;
 }
 
-Action setup(CLI::App& app) {
+Action setup(Arguments& app) {
   auto o = std::make_shared<ProximityOptions>();
   app.description(
       "Prints the smallest enclosing circle of the points of the scene file FILE (- for\n"
