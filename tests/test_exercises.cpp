@@ -58,11 +58,16 @@ std::vector<std::string> secret_lines(const fs::path& dir) {
       std::string l;
       while (std::getline(in, l)) {
         l = trim(l);
-        if (l.size() >= 30 && pub.find(l) == std::string::npos) s.insert(l);
+        if (l.size() >= 30) s.insert(l);
       }
     }
   }
-  return {s.begin(), s.end()};
+  const std::vector<std::string> all(s.begin(), s.end());
+  const std::vector<bool> in_public = occur_in(pub, all);
+  std::vector<std::string> secret;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!in_public[i]) secret.push_back(all[i]);
+  return secret;
 }
 
 // Expects that the grading `r` shows none of `secrets`, and that a hidden test says only how it

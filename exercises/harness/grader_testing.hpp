@@ -7,9 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "process.hpp"
@@ -85,6 +88,28 @@ inline Results grade(const std::string& tool, const std::string& exercise, const
     out.tests.push_back({t.at("name").get<std::string>(), t.at("output").get<std::string>(),
                          t.at("visibility").get<std::string>(), t.at("score").get<double>(), t.at("max_score").get<double>()});
   return out;
+}
+
+/// found[i]: lines[i] occurs in `text` (as text.find(lines[i]) would say), for lines of at least
+/// `window` characters, in one pass over the text: a line occurs only where its first `window`
+/// characters do, so each window of the text is looked up among the lines' first windows and a
+/// hit is confirmed by comparing the whole line. (One find per line read a 17 MB source tree
+/// once per secret line: 250 s under the sanitizers.)
+inline std::vector<bool> occur_in(const std::string& text, const std::vector<std::string>& lines,
+                                  std::size_t window = 30) {
+  std::unordered_multimap<std::string_view, std::size_t> first;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].size() < window) throw std::logic_error("occur_in: a line shorter than the window");
+    first.emplace(std::string_view(lines[i]).substr(0, window), i);
+  }
+  std::vector<bool> found(lines.size(), false);
+  const std::string_view t(text);
+  for (std::size_t at = 0; at + window <= t.size(); ++at) {
+    const auto [b, e] = first.equal_range(t.substr(at, window));
+    for (auto it = b; it != e; ++it)
+      if (!found[it->second] && t.substr(at).starts_with(lines[it->second])) found[it->second] = true;
+  }
+  return found;
 }
 
 }  // namespace t2::grader_testing
