@@ -62,12 +62,7 @@ std::vector<std::string> secret_lines(const fs::path& dir) {
       }
     }
   }
-  const std::vector<std::string> all(s.begin(), s.end());
-  const std::vector<bool> in_public = occur_in(pub, all);
-  std::vector<std::string> secret;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (!in_public[i]) secret.push_back(all[i]);
-  return secret;
+  return absent_from(pub, {s.begin(), s.end()});
 }
 
 // Expects that the grading `r` shows none of `secrets`, and that a hidden test says only how it

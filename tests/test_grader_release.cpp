@@ -54,12 +54,7 @@ std::vector<std::string> all_secret_lines() {
       if (l.size() >= 30) lines.insert(l);
     }
   }
-  const std::vector<std::string> all(lines.begin(), lines.end());
-  const std::vector<bool> in_public = occur_in(pub, all);
-  std::vector<std::string> secret;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (!in_public[i]) secret.push_back(all[i]);
-  return secret;
+  return absent_from(pub, {lines.begin(), lines.end()});
 }
 
 // The search both leak checks use (grader_testing.hpp) says what string::find says: lines at the

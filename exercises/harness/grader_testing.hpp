@@ -112,4 +112,13 @@ inline std::vector<bool> occur_in(const std::string& text, const std::vector<std
   return found;
 }
 
+/// The lines (of at least 30 characters) that do not occur in `text`, in their order.
+inline std::vector<std::string> absent_from(const std::string& text, const std::vector<std::string>& lines) {
+  const std::vector<bool> in = occur_in(text, lines);
+  std::vector<std::string> r;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (!in[i]) r.push_back(lines[i]);
+  return r;
+}
+
 }  // namespace t2::grader_testing
