@@ -78,6 +78,7 @@ struct EnclosingCircle {
 class UndefinedEnclosing : public Undefined {
  public:
   /// @param site, other the sites the rule names (other = site when one suffices)
+  /// @param rule the message: which rule of the file comment leaves the circle undefined
   UndefinedEnclosing(std::uint32_t site, std::uint32_t other, const std::string& rule)
       : Undefined(rule), site(site), other(other) {}
   std::uint32_t site;   ///< the input index of the first site the rule names
