@@ -38,6 +38,8 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
   std::unordered_map<std::pair<long, long>, long, EdgeHash> owner;  // directed edge -> its triangle
   std::vector<char> is_vertex(P.size(), 0);
   t2::Rational area = 0, hull = 0;
+  std::vector<std::pair<t2::Rational, t2::Rational>> place(P.size());  // xy(P[i]), once each
+  for (std::size_t i = 0; i < P.size(); ++i) place[i] = xy(P[i]);
   for (std::size_t k = 0; k < T.size(); k += 3) {
     for (int i = 0; i < 3; ++i) {
       if (T[k + i] < 0 || T[k + i] >= long(P.size())) return "a vertex index out of range";
@@ -48,9 +50,9 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
     if (t2::orient(P[T[k]], P[T[k + 1]], P[T[k + 2]]) != t2::POSITIVE)
       return "triangle " + std::to_string(T[k]) + " " + std::to_string(T[k + 1]) + " " + std::to_string(T[k + 2]) +
              " is not counter-clockwise";
-    const auto [ax, ay] = xy(P[T[k]]);
-    const auto [bx, by] = xy(P[T[k + 1]]);
-    const auto [cx, cy] = xy(P[T[k + 2]]);
+    const auto& [ax, ay] = place[T[k]];
+    const auto& [bx, by] = place[T[k + 1]];
+    const auto& [cx, cy] = place[T[k + 2]];
     area += (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
   }
   std::vector<long> vertices;
@@ -65,8 +67,8 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
         if (t2::orient(P[e.first], P[e.second], P[v]) == t2::NEGATIVE)
           return "point " + std::to_string(v) + " is outside the boundary edge " + edge(e.first, e.second) +
                  ": the triangles do not fill the convex hull";
-      const auto [ax, ay] = xy(P[e.first]);
-      const auto [bx, by] = xy(P[e.second]);
+      const auto& [ax, ay] = place[e.first];
+      const auto& [bx, by] = place[e.second];
       hull += ax * by - ay * bx;
       continue;
     }
@@ -85,9 +87,9 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
   if (area != hull) return "the triangles do not cover the region their boundary encloses exactly once";
   if (long(vertices.size()) - long(edges) + long(T.size() / 3) != 1) return "V - E + F != 1: not one disc";
   std::map<std::pair<t2::Rational, t2::Rational>, int> at;  // the vertices by their exact place
-  for (long v : vertices) ++at[xy(P[v])];
+  for (long v : vertices) ++at[place[v]];
   for (long p = 0; p < long(P.size()); ++p) {
-    const auto it = at.find(xy(P[p]));  // front points: equal in T² when drawn at the same place
+    const auto it = at.find(place[p]);  // front points: equal in T² when drawn at the same place
     const int equal = it == at.end() ? 0 : it->second;
     if (equal != 1)
       return "point " + std::to_string(p) + (equal ? " is equal to two vertices" : " is not a vertex (nor equal to one)");
