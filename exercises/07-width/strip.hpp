@@ -56,19 +56,13 @@ inline V cross(const V& p, const V& q) {
   return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
 }
 
-/// "" when {i, j, k} is a narrowest strip of P (which has one), else what is wrong.
-inline std::string check(const std::vector<t2::Point>& P, const std::vector<long>& got) {
+/// "" when {i, j, k} is a strip holding P of squared width `least`, else what is wrong.
+inline std::string judge(const std::vector<t2::Point>& P, const std::vector<long>& got, const t2::Rational& least) {
   if (got.size() != 3) return "the answer has " + std::to_string(got.size()) + " indices, not 3";
   for (long i : got)
     if (i < 0 || i >= long(P.size())) return "index " + std::to_string(i) + " is out of range";
   std::vector<V> E;
   for (const t2::Point& p : P) E.push_back(vec(p));
-  std::optional<t2::Rational> best;
-  for (std::size_t i = 0; i < E.size(); ++i)
-    for (std::size_t j = 0; j < E.size(); ++j)
-      if (E[i][0] != 0 && i != j)
-        if (const auto w = strip(E, cross(E[i], E[j])); w && (!best || *w < *best)) best = w;
-  if (!best) return "bad test input: no strip holds the points";
   const V L = cross(E[got[0]], E[got[1]]);
   const auto w = strip(E, L);
   const std::string ijk = "p" + std::to_string(got[0]) + " p" + std::to_string(got[1]) + " p" + std::to_string(got[2]);
@@ -77,8 +71,22 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
   if (k[0] == 0) return "the other side must pass through a proper point";
   const t2::Rational v = t2::Rational(L[0] * k[0] + L[1] * k[1] + L[2] * k[2]) / t2::Rational(k[0]);
   if (v * v / t2::Rational(L[1] * L[1] + L[2] * L[2]) != *w) return ijk + ": some point lies beyond the parallel through the third";
-  if (*w != *best) return ijk + " is a strip of squared width " + w->get_str() + "; a narrower one has " + best->get_str();
+  if (*w != least) return ijk + " is a strip of squared width " + w->get_str() + "; a narrower one has " + least.get_str();
   return "";
+}
+
+/// "" when {i, j, k} is a narrowest strip of P (which has one), else what is wrong. The least
+/// width by brute force: O(n³).
+inline std::string check(const std::vector<t2::Point>& P, const std::vector<long>& got) {
+  std::vector<V> E;
+  for (const t2::Point& p : P) E.push_back(vec(p));
+  std::optional<t2::Rational> best;
+  for (std::size_t i = 0; i < E.size(); ++i)
+    for (std::size_t j = 0; j < E.size(); ++j)
+      if (E[i][0] != 0 && i != j)
+        if (const auto w = strip(E, cross(E[i], E[j])); w && (!best || *w < *best)) best = w;
+  if (!best) return "bad test input: no strip holds the points";
+  return judge(P, got, *best);
 }
 
 }  // namespace ex07test

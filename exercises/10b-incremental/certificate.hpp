@@ -5,8 +5,9 @@
 // (exact rationals) sum to the area that polygon encloses, V - E + F = 1, every point of P is
 // equal to exactly one vertex, and every interior edge is locally Delaunay under the exact
 // t2::in_circle — which, for a triangulation of the points, makes it a Delaunay triangulation.
+#include <cstdint>
 #include <map>
-#include <set>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,40 +24,51 @@ inline std::pair<t2::Rational, t2::Rational> xy(const t2::Point& p) {
   return {t2::to_rational(p.x()) / t2::to_rational(p.w()), t2::to_rational(p.y()) / t2::to_rational(p.w())};
 }
 
+struct EdgeHash {
+  std::size_t operator()(const std::pair<long, long>& e) const {
+    return std::size_t(((std::uint64_t(e.first) << 32) ^ std::uint64_t(e.second)) * 0x9E3779B97F4A7C15ull >> 17);
+  }
+};
+
 inline std::string edge(long a, long b) { return std::to_string(a) + " -> " + std::to_string(b); }
 
 /// "" when T is a Delaunay triangulation of P (see the file comment), else what is wrong.
 inline std::string check(const std::vector<t2::Point>& P, const std::vector<long>& T) {
   if (T.empty() || T.size() % 3 != 0) return "the answer is empty or its length not a multiple of 3";
-  std::map<std::pair<long, long>, long> owner;
-  std::set<long> V;
+  std::unordered_map<std::pair<long, long>, long, EdgeHash> owner;  // directed edge -> its triangle
+  std::vector<char> is_vertex(P.size(), 0);
   t2::Rational area = 0, hull = 0;
+  std::vector<std::pair<t2::Rational, t2::Rational>> place(P.size());  // xy(P[i]), once each
+  for (std::size_t i = 0; i < P.size(); ++i) place[i] = xy(P[i]);
   for (std::size_t k = 0; k < T.size(); k += 3) {
     for (int i = 0; i < 3; ++i) {
       if (T[k + i] < 0 || T[k + i] >= long(P.size())) return "a vertex index out of range";
-      V.insert(T[k + i]);
+      is_vertex[T[k + i]] = 1;
       if (!owner.emplace(std::pair{T[k + i], T[k + (i + 1) % 3]}, long(k)).second)
         return "the directed edge " + edge(T[k + i], T[k + (i + 1) % 3]) + " is in two triangles";
     }
     if (t2::orient(P[T[k]], P[T[k + 1]], P[T[k + 2]]) != t2::POSITIVE)
       return "triangle " + std::to_string(T[k]) + " " + std::to_string(T[k + 1]) + " " + std::to_string(T[k + 2]) +
              " is not counter-clockwise";
-    const auto [ax, ay] = xy(P[T[k]]);
-    const auto [bx, by] = xy(P[T[k + 1]]);
-    const auto [cx, cy] = xy(P[T[k + 2]]);
+    const auto& [ax, ay] = place[T[k]];
+    const auto& [bx, by] = place[T[k + 1]];
+    const auto& [cx, cy] = place[T[k + 2]];
     area += (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
   }
+  std::vector<long> vertices;
+  for (long v = 0; v < long(P.size()); ++v)
+    if (is_vertex[v]) vertices.push_back(v);
   std::size_t edges = 0;
   for (const auto& [e, k] : owner) {
     const auto other = owner.find({e.second, e.first});
     if (other == owner.end()) {  // a boundary edge: every vertex on its inner side or line
       ++edges;
-      for (long v : V)
+      for (long v : vertices)
         if (t2::orient(P[e.first], P[e.second], P[v]) == t2::NEGATIVE)
           return "point " + std::to_string(v) + " is outside the boundary edge " + edge(e.first, e.second) +
                  ": the triangles do not fill the convex hull";
-      const auto [ax, ay] = xy(P[e.first]);
-      const auto [bx, by] = xy(P[e.second]);
+      const auto& [ax, ay] = place[e.first];
+      const auto& [bx, by] = place[e.second];
       hull += ax * by - ay * bx;
       continue;
     }
@@ -73,10 +85,12 @@ inline std::string check(const std::vector<t2::Point>& P, const std::vector<long
              std::to_string(c);
   }
   if (area != hull) return "the triangles do not cover the region their boundary encloses exactly once";
-  if (long(V.size()) - long(edges) + long(T.size() / 3) != 1) return "V - E + F != 1: not one disc";
+  if (long(vertices.size()) - long(edges) + long(T.size() / 3) != 1) return "V - E + F != 1: not one disc";
+  std::map<std::pair<t2::Rational, t2::Rational>, int> at;  // the vertices by their exact place
+  for (long v : vertices) ++at[place[v]];
   for (long p = 0; p < long(P.size()); ++p) {
-    int equal = 0;
-    for (long v : V) equal += P[v] == P[p];
+    const auto it = at.find(place[p]);  // front points: equal in T² when drawn at the same place
+    const int equal = it == at.end() ? 0 : it->second;
     if (equal != 1)
       return "point " + std::to_string(p) + (equal ? " is equal to two vertices" : " is not a vertex (nor equal to one)");
   }

@@ -3,6 +3,8 @@
 // infinity, where nearer as drawn is farther). Inputs: one side (front, and back, where the
 // drawing is the antipodes'), both sides, points of Ω, and pairs whose distances differ by a few
 // units in the last place of their coordinates, which squared distances in doubles cannot tell.
+// LargeHull: 20 000 points, 10 000 of them on their hull, where the brute force (every pair) runs
+// out of time; its oracle is no brute force but a certificate (below).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,6 +97,48 @@ TEST(Hidden, NearTies) {
     EXPECT_EQ(check(P, ex07b::diameter(P)), "") << "round " << round;
   }
   EXPECT_GT(differ, 50);
+}
+
+// Two points A = (a, b), B = −A and 20 000 others strictly inside the circle with diameter AB
+// (checked exactly: |p|² < |A|²): every other pair is nearer than A and B, so {A, B} (or a copy of
+// A or B at another scale) is the farthest pair of one side. 10 000 points are rounded from a
+// circle of radius 0.999·|A| ≈ 10⁹, hence on the hull; 9 000 are inside, 1 000 are copies at
+// another scale; each point at a scale ±1, ±2 or ±0.5. Rounds: front; back; front with a point
+// of Ω (+∞: any proper point with it).
+TEST(Hidden, LargeHull) {
+  std::mt19937_64 g(70000007);
+  const double pi = std::acos(-1.0);
+  for (int round = 0; round < 3; ++round) {
+    const double a = std::round(6e8 + 1e8 * unit(g)), b = std::round(7e8 + 1e8 * unit(g));
+    const t2::Integer A2 = t2::Integer(a) * t2::Integer(a) + t2::Integer(b) * t2::Integer(b);
+    const double r = 0.999 * std::sqrt(a * a + b * b), phase = unit(g);
+    std::vector<Point> P = {Point(1, a, b), Point(1, -a, -b)};
+    for (int k = 0; k < 10000; ++k) {
+      const double t = 2 * pi * (k + phase) / 10000;
+      P.push_back(Point(1, std::round(r * std::cos(t)), std::round(r * std::sin(t))));
+    }
+    for (int k = 0; k < 9000; ++k) P.push_back(Point(1, std::round(r * (unit(g) - 0.5)), std::round(r * (unit(g) - 0.5))));
+    for (std::size_t k = 2; k < P.size(); ++k) {
+      const t2::Integer x(P[k].x()), y(P[k].y());
+      ASSERT_TRUE(x * x + y * y < A2) << "the test's construction";
+    }
+    for (int k = 0; k < 1000; ++k) P.push_back(P[g() % P.size()]);
+    const double sign = round == 1 ? -1 : 1;
+    for (std::size_t k = 0; k < P.size(); ++k) {
+      const double s = sign * std::ldexp(1.0, static_cast<int>(g() % 3) - 1) * (k >= 19002 ? 3 : 1);
+      P[k] = Point(s, s * P[k].x(), s * P[k].y());
+    }
+    const Point A = P[0], B = P[1];
+    if (round == 2) P.push_back(Point(0, 3, -4));
+    std::shuffle(P.begin(), P.end(), g);
+    const std::vector<long> got = ex07b::diameter(P);
+    ASSERT_EQ(got.size(), 2u) << "round " << round;
+    ASSERT_TRUE(got[0] >= 0 && got[0] < long(P.size()) && got[1] >= 0 && got[1] < long(P.size())) << "round " << round;
+    const auto D = ex07btest::drawn({P[got[0]], P[got[1]], A, B});
+    const auto want = round == 2 ? std::pair<int, t2::Rational>{1, 0} : *ex07btest::key(D[2], D[3]);
+    EXPECT_TRUE(ex07btest::key(D[0], D[1]) == want) << "round " << round << ": p" << got[0] << " p" << got[1]
+                                                    << " is not a farthest pair";
+  }
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 // one, every interior edge locally Delaunay under the exact in-circle test). Inputs: random
 // points; an integer grid (every unit square cocircular); copies equal in T², points on the
 // lines of hull edges, all-collinear input; weights w != 1; nearly cocircular points whose
-// in-circle signs are a few units in the last place.
+// in-circle signs are a few units in the last place. LargeRandom: 25 000 points, where locating
+// by testing every triangle runs out of time (the certificate takes O(n log n) with a hull of a
+// few hundred edges).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,6 +79,26 @@ TEST(Hidden, NearlyCocircular) {
     }
     EXPECT_EQ(ex10btest::check(P, ex10b::delaunay(P)), "") << m;
   }
+}
+
+// 25 000 points: random in the unit square at weights 1, 2, 0.5 and 3 (the last rounded: points
+// near, not on, the drawn ones), 20 on the bottom edge, the two bottom corners, and 1 500 copies
+// at weight 4 (equal in T²), shuffled.
+TEST(Hidden, LargeRandom) {
+  std::mt19937_64 g(1013);
+  const double w[] = {1, 2, 0.5, 3};
+  std::vector<Point> P = {Point::cartesian(0, 0), Point::cartesian(1, 0)};
+  for (int k = 0; k < 20; ++k) P.push_back(Point::cartesian(unit(g), 0));
+  for (int k = 0; k < 23480; ++k) {
+    const double s = w[g() % 4];
+    P.push_back(Point(s, s * unit(g), s * unit(g)));
+  }
+  for (int k = 0; k < 1500; ++k) {
+    const Point p = P[g() % P.size()];
+    P.push_back(Point(4 * p.w(), 4 * p.x(), 4 * p.y()));
+  }
+  std::shuffle(P.begin(), P.end(), g);
+  EXPECT_EQ(ex10btest::check(P, ex10b::delaunay(P)), "");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // strips whose widths differ by a few units in the last place compare equal or the wrong way.
 #include "width.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -19,11 +20,35 @@ V cross(const V& p, const V& q) {
 }
 t2::Integer dot(const V& p, const V& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
 
-struct Frac {  // n / d, d > 0, in doubles
-  Frac(const t2::Integer& a, const t2::Integer& b) : n(a.get_d()), d(b.get_d()) {}
-  double n, d;
+struct Frac {
+  t2::Integer n, d;  // n / d, d > 0
 };
-bool less(const Frac& a, const Frac& b) { return a.n / a.d < b.n / b.d; }
+bool less(const Frac& a, const Frac& b) { return a.n * b.d < b.n * a.d; }
+
+// The strict hull of the front points F[at[..]], counter-clockwise as drawn (Andrew's monotone
+// chain on the drawn positions x/w, y/w, compared cross-multiplied since w > 0).
+std::vector<long> hull(const std::vector<V>& F, std::vector<long> at) {
+  const auto before = [&](long a, long b) {
+    const t2::Integer ax = F[a][1] * F[b][0], bx = F[b][1] * F[a][0];
+    if (ax != bx) return ax < bx;
+    return F[a][2] * F[b][0] < F[b][2] * F[a][0];
+  };
+  std::sort(at.begin(), at.end(), before);
+  at.erase(std::unique(at.begin(), at.end(), [&](long a, long b) { return !before(a, b) && !before(b, a); }), at.end());
+  std::vector<long> H(2 * at.size());
+  std::size_t k = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t floor = k;
+    for (long p : at) {
+      while (k >= floor + 2 && sgn(dot(cross(F[H[k - 2]], F[H[k - 1]]), F[p])) <= 0) --k;
+      H[k++] = p;
+    }
+    --k;  // the last point starts the other chain
+    std::reverse(at.begin(), at.end());
+  }
+  H.resize(k);
+  return H;
+}
 
 }  // namespace
 
@@ -51,29 +76,25 @@ std::vector<long> width(const std::vector<t2::Point>& P) {
     }
     return {lo, omega[0], hi};
   }
+  std::vector<V> F = E;  // on the front: a back point's antipode is drawn at the same place
+  if (P[proper[0]].w() < 0)
+    for (V& f : F) f = {-f[0], -f[1], -f[2]};
+  const std::vector<long> H = hull(F, proper);  // h ≥ 3: the points are not on one line
+  const std::size_t h = H.size();
+  const auto at = [&](std::size_t i) -> const V& { return F[H[i % h]]; };
+  // The distance of vertex j from the line L, up to the factor 1 / |L_xy| of the edge: (L·v_j) / w_j.
+  const auto height = [&](const V& L, std::size_t j) { return Frac{dot(L, at(j)), at(j)[0]}; };
   std::vector<long> best;
-  Frac w{t2::Integer(0), t2::Integer(0)};  // the least squared width so far (none while d = 0)
-  for (long i : proper)
-    for (long j : proper) {
-      const V L = cross(E[i], E[j]);
-      const t2::Integer n2 = L[1] * L[1] + L[2] * L[2];
-      if (n2 == 0) continue;  // the same point twice
-      int side = 0;
-      bool holds = true;
-      long far = i;
-      Frac f{t2::Integer(0), t2::Integer(1)};
-      for (long p : proper) {
-        const t2::Integer a = dot(L, E[p]);
-        const int s = sgn(a) * sgn(E[p][0]);
-        if (s != 0 && side != 0 && s != side) {
-          holds = false;
-          break;
-        }
-        if (s != 0) side = s;
-        if (const Frac g{a * a, E[p][0] * E[p][0] * n2}; less(f, g)) f = g, far = p;
-      }
-      if (holds && (w.d == 0 || less(f, w))) w = f, best = {i, j, far};
-    }
+  Frac w{0, 0};  // the least squared width so far (none while d = 0)
+  std::size_t j = 1;
+  for (std::size_t i = 0; i < h; ++i) {  // edge e_i = H[i] → H[i+1]; j only moves forward
+    const V L = cross(at(i), at(i + 1));
+    if (j < i + 1) j = i + 1;
+    while (less(height(L, j), height(L, j + 1))) ++j;
+    const Frac d = height(L, j);
+    const Frac f{d.n * d.n, d.d * d.d * (L[1] * L[1] + L[2] * L[2])};
+    if (w.d == 0 || f.n.get_d() / f.d.get_d() < w.n.get_d() / w.d.get_d()) w = f, best = {H[i], H[(i + 1) % h], H[j % h]};  // in doubles
+  }
   return best;
 }
 
