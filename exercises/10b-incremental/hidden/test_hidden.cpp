@@ -1,5 +1,5 @@
 // Exercise 10b, hidden tests. Oracle: the exact certificate of certificate.hpp (a triangulation
-// of the points tiling their hull, with exact rational areas, every point a vertex or equal to
+// of the points tiling their hull, every point a vertex or equal to
 // one, every interior edge locally Delaunay under the exact in-circle test). Inputs: random
 // points; an integer grid (every unit square cocircular); copies equal in T², points on the
 // lines of hull edges, all-collinear input; weights w != 1; nearly cocircular points whose
