@@ -29,7 +29,6 @@ Option* Option::check(const Check& c) {
     case Check::Kind::positive: o_->check(CLI::PositiveNumber); break;
     case Check::Kind::range: o_->check(CLI::Range(c.low, c.high)); break;
     case Check::Kind::member: o_->check(CLI::IsMember(c.members)); break;
-    case Check::Kind::function: o_->check(c.function); break;
   }
   return this;
 }

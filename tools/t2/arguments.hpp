@@ -22,22 +22,21 @@ class Option;
 
 namespace t2cli {
 
-/// A check of an option's value: CLI::PositiveNumber, CLI::Range, CLI::IsMember, or a function
-/// that returns what is wrong with a value ("" when nothing is).
+/// A check of an option's value, one of CLI11's: CLI::PositiveNumber, CLI::Range, CLI::IsMember.
+/// (A check of one's own is a function: Option::check below.)
 struct Check {
-  enum class Kind { positive, range, member, function } kind;
+  enum class Kind { positive, range, member } kind;
   double low = 0, high = 0;
   std::vector<std::string> members;
-  std::function<std::string(const std::string&)> function;
 };
 
 /// The value is a number greater than 0.
-inline const Check PositiveNumber{Check::Kind::positive, 0, 0, {}, {}};
+inline const Check PositiveNumber{Check::Kind::positive, 0, 0, {}};
 /// The value is a number in [low, high].
-inline Check Range(double low, double high) { return Check{Check::Kind::range, low, high, {}, {}}; }
+inline Check Range(double low, double high) { return Check{Check::Kind::range, low, high, {}}; }
 /// The value is one of `members`.
 inline Check IsMember(std::vector<std::string> members) {
-  return Check{Check::Kind::member, 0, 0, std::move(members), {}};
+  return Check{Check::Kind::member, 0, 0, std::move(members)};
 }
 
 /// One declared option; its setters return it, to be chained.
@@ -47,6 +46,7 @@ class Option {
   Option* required();
   Option* type_name(const std::string& word);
   Option* check(const Check& c);
+  /// A check of one's own: `what_is_wrong` returns what is wrong with a value, "" when nothing is.
   Option* check(std::function<std::string(const std::string&)> what_is_wrong);
   Option* delimiter(char c);
 
