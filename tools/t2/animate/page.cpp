@@ -107,8 +107,12 @@ class PathWords {
   /// The next word as a number (0 when there is none or it is no number).
   double number() {
     std::string_view w;
+    return next(w) ? number_of(w) : 0;
+  }
+  /// The word w as a number (0 when it is no number).
+  static double number_of(std::string_view w) {
     double v = 0;
-    if (next(w)) std::from_chars(w.data(), w.data() + w.size(), v);
+    std::from_chars(w.data(), w.data() + w.size(), v);
     return v;
   }
 
@@ -129,10 +133,8 @@ std::string rounded_path(std::string_view d) {
       out += w;
       after_number = false;
     } else {
-      double v = 0;
-      std::from_chars(w.data(), w.data() + w.size(), v);
       if (after_number) out += ' ';
-      out += px(v);
+      out += px(PathWords::number_of(w));
       after_number = true;
     }
   }
