@@ -115,17 +115,22 @@ TEST_P(Exercise, ReferenceSolutionScoresFullMarks) {
   EXPECT_GE(hidden, 1);
 }
 
-TEST_P(Exercise, StubScoresZeroOnHiddenTests) {
+// The stub is graded once, for both what it scores and what it shows (the wrong solutions'
+// gradings are checked the same way in EveryHiddenTestFailsOnSomeWrongSolution).
+TEST_P(Exercise, StubScoresZeroAndShowsNothingHidden) {
+  const auto secrets = secret_lines(dir);
+  ASSERT_FALSE(secrets.empty());
   const Results r = grade(kTool, GetParam(), dir);
   for (const auto& t : r.tests) {
     if (t.visibility == "visible") continue;
     EXPECT_EQ(t.score, 0) << t.name;
   }
   EXPECT_EQ(r.score, 0) << "the stub throws 'not implemented yet' everywhere";
+  expect_nothing_hidden_shown(r, secrets, "the stub");
 }
 
 // Each wrong solution is graded once, for both what its grading scores and what it shows
-// (GradingShowsNothingOfTheHiddenTests checks the stub's grading the same way).
+// (StubScoresZeroAndShowsNothingHidden checks the stub's grading the same way).
 TEST_P(Exercise, EveryHiddenTestFailsOnSomeWrongSolution) {
   const auto secrets = secret_lines(dir);
   ASSERT_FALSE(secrets.empty());
@@ -154,13 +159,6 @@ TEST_P(Exercise, EveryHiddenTestFailsOnSomeWrongSolution) {
   EXPECT_TRUE(fs::exists(dir / "wrong" / "throws-undefined")) << "every exercise has the wrong solution that always throws Undefined";
   ASSERT_FALSE(hidden.empty());
   for (const auto& h : hidden) EXPECT_TRUE(caught.count(h)) << h << " fails on no wrong solution: it cannot fail";
-}
-
-TEST_P(Exercise, GradingShowsNothingOfTheHiddenTests) {
-  // The stub's grading here; the wrong solutions' gradings in EveryHiddenTestFailsOnSomeWrongSolution.
-  const auto secrets = secret_lines(dir);
-  ASSERT_FALSE(secrets.empty());
-  expect_nothing_hidden_shown(grade(kTool, GetParam(), dir), secrets, "the stub");
 }
 
 INSTANTIATE_TEST_SUITE_P(All, Exercise, ::testing::ValuesIn(exercise_ids()),
