@@ -8,6 +8,7 @@
 #include <string>
 
 #include "fortune_beach.hpp"
+#include "fortune_interval.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/sign_sqrt.hpp"
@@ -18,6 +19,7 @@ namespace {
 
 using Index = FortuneDiagram::Index;
 using detail::Arc;
+using detail::Interval;
 
 Sign sign_of(const Rational& q) { return static_cast<Sign>(sgn(q)); }
 
@@ -38,12 +40,23 @@ Sign root_sign(const Rational& a, const Rational& b, const Rational& c) {
 struct Site {
   Rational x, y;
   Index id;
+  Interval xi, yi;  // enclosures of x and y (fortune_interval.hpp)
 };
 
 //> fortune-breakpoint
 /// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right) when
-/// the sweep line is y = L (file comment of fortune.hpp).
-Sign breakpoint_side(const Site& p, const Site& q, const Rational& L, const Rational& a) {
+/// the sweep line is y = L, for the site s = (a, L) (file comment of fortune.hpp). The
+/// same formula in intervals decides first when it can.
+Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
+  {
+    const Interval dp = p.yi - s.yi, dq = q.yi - s.yi, den = dq - dp;
+    if (const int sd = den.sign(); sd != 2) {
+      const Interval dx = p.xi - q.xi, dy = p.yi - q.yi;
+      const Interval r = dq * p.xi - dp * q.xi - s.xi * den - sqrt(dp * dq * (dx * dx + dy * dy));
+      if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
+    }
+  }
+  const Rational &L = s.y, &a = s.x;
   const Rational dp = p.y - L, dq = q.y - L;
   if (dp == dq) return sign_of(Rational(p.x + q.x) / 2 - a);
   const Rational dx = p.x - q.x, dy = p.y - q.y;
@@ -52,16 +65,44 @@ Sign breakpoint_side(const Site& p, const Site& q, const Rational& L, const Rati
 }
 //< fortune-breakpoint
 
-/// A circle event: the circle with centre (cx, cy) and squared radius R, at y = cy + √R.
+/// A circle event: the circle through the sites a, b, c with centre (cx, cy) and squared
+/// radius R, at y = cy + √R. The rationals are computed when a decision first needs them
+/// (`exact`); the enclosure `yi` of cy + √R, from the sites' enclosures, decides most orders.
 struct Event {
-  Rational cx, cy, R;
+  const Site *a, *b, *c;
+  Interval yi;
   Arc* arc;     // the arc it removes
   bool valid;   // false once the arc or its neighbours changed
+  mutable bool known = false;
+  mutable Rational cx{}, cy{}, R{};
 };
+
+/// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
+const Event& exact(const Event& e) {
+  if (e.known) return e;
+  const Site &a = *e.a, &b = *e.b, &c = *e.c;
+  const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
+  const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
+  e.cx = a.x + ux, e.cy = a.y + uy, e.R = ux * ux + uy * uy;
+  e.known = true;
+  return e;
+}
+
+/// The enclosure of the event's y, cy + √R, by the same formula in intervals.
+Interval event_y(const Site& a, const Site& b, const Site& c) {
+  const Interval bx = b.xi - a.xi, by = b.yi - a.yi, cx = c.xi - a.xi, cy = c.yi - a.yi;
+  const Interval D = bx * cy - by * cx, B = bx * bx + by * by, C = cx * cx + cy * cy;
+  const Interval h = recip(D + D);
+  const Interval ux = (cy * B - by * C) * h, uy = (bx * C - cx * B) * h;
+  return a.yi + uy + sqrt(ux * ux + uy * uy);
+}
 
 //> fortune-event-order
 /// The order of events: sign(e − site) by y then x, a circle event first at one point.
-Sign event_vs_site(const Event& e, const Site& s) {
+Sign event_vs_site(const Event& ev, const Site& s) {
+  if (const int f = (ev.yi - s.yi).sign(); f != 2) return static_cast<Sign>(f);
+  const Event& e = exact(ev);
   const Sign y = root_sign(e.cy - s.y, Rational(1), e.R);
   if (y != ZERO) return y;
   const Sign x = sign_of(e.cx - s.x);
@@ -69,7 +110,9 @@ Sign event_vs_site(const Event& e, const Site& s) {
 }
 
 /// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
-Sign event_vs_event(const Event& e, const Event& f) {
+Sign event_vs_event(const Event& ev, const Event& fv) {
+  if (const int s = (ev.yi - fv.yi).sign(); s != 2) return static_cast<Sign>(s);
+  const Event &e = exact(ev), &f = exact(fv);
   const Rational d = e.cy - f.cy;
   const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
   Sign y;
@@ -79,14 +122,6 @@ Sign event_vs_event(const Event& e, const Event& f) {
   return y != ZERO ? y : sign_of(e.cx - f.cx);
 }
 //< fortune-event-order
-
-/// The circle through three sites (not collinear).
-void circle(const Site& a, const Site& b, const Site& c, Event& e) {
-  const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
-  const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
-  e.cx = a.x + ux, e.cy = a.y + uy, e.R = ux * ux + uy * uy;
-}
 
 /// An edge of the sweep: its two sites and its two ends (vertex numbers, -1 while open).
 struct SweepEdge {
@@ -140,8 +175,8 @@ class Sweep {
   Arc* locate(const Site& s) const {
     Arc* n = beach_.root;
     for (;;) {
-      if (n->prev && breakpoint_side(s_[n->prev->site], s_[n->site], s.y, s.x) > 0) n = n->left;
-      else if (n->next && breakpoint_side(s_[n->site], s_[n->next->site], s.y, s.x) <= 0) n = n->right;
+      if (n->prev && breakpoint_side(s_[n->prev->site], s_[n->site], s) > 0) n = n->left;
+      else if (n->next && breakpoint_side(s_[n->site], s_[n->next->site], s) <= 0) n = n->right;
       else return n;
     }
   }
@@ -168,7 +203,8 @@ class Sweep {
     Arc* l = m->prev;
     Arc* r = m->next;
     const int v = int(vertices.size());
-    vertices.push_back({ev_[e].cx, ev_[e].cy, s_[l->site].id, s_[m->site].id, s_[r->site].id});
+    const Event& x = exact(ev_[e]);
+    vertices.push_back({x.cx, x.cy, s_[l->site].id, s_[m->site].id, s_[r->site].id});
     edges[m->edge].end[m->end] = v;
     edges[r->edge].end[r->end] = v;
     const int g = new_edge(l->site, r->site);
@@ -188,9 +224,7 @@ class Sweep {
     if (!l || !r || l->site == r->site) return;
     const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
     if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
-    Event ev{{}, {}, {}, m, true};
-    circle(a, b, c, ev);
-    ev_.push_back(std::move(ev));
+    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
     m->event = int(ev_.size()) - 1;
     queue_.push(m->event);
   }
@@ -231,12 +265,13 @@ FortuneDiagram fortune(std::span<const Point> points) {
     if (!(p.w() > 0))
       throw Undefined("fortune: site " + std::to_string(i) + " " + to_string(p) +
                       " is not on the front side (Fortune's sweep works in the plane of the front side)");
-    s.push_back({Rational(p.x()) / Rational(p.w()), Rational(p.y()) / Rational(p.w()), Index(i)});
+    s.push_back({Rational(p.x()) / Rational(p.w()), Rational(p.y()) / Rational(p.w()), Index(i), {}, {}});
   }
   std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
   std::vector<Site> u;  // distinct sites, the first of each group kept
   u.reserve(s.size());
   for (Site& x : s) {
+    x.xi = Interval::of(x.x), x.yi = Interval::of(x.y);
     if (!u.empty() && u.back().x == x.x && u.back().y == x.y) out.duplicates.push_back({x.id, u.back().id});
     else u.push_back(std::move(x));
   }
@@ -272,6 +307,11 @@ FortuneDiagram fortune(std::span<const Point> points) {
   auto lower = [](const Vec& v) { return sgn(v.second) < 0 || (sgn(v.second) == 0 && sgn(v.first) < 0); };
   for (std::size_t k = 0; k < around.size(); ++k) {
     auto& a = around[k];
+    if (a.size() == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
+      out.cells.insert(out.cells.end(), a.begin(), a.end());
+      out.first.push_back(Index(out.cells.size()));
+      continue;
+    }
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
     std::vector<std::pair<Vec, Index>> d;
