@@ -3,6 +3,7 @@
 #include "t2/voronoi/fortune.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
 #include <queue>
 #include <string>
@@ -73,20 +74,21 @@ struct Event {
   Interval yi;
   Arc* arc;     // the arc it removes
   bool valid;   // false once the arc or its neighbours changed
-  mutable bool known = false;
-  mutable Rational cx{}, cy{}, R{};
+  struct Circle {
+    Rational cx, cy, R;
+  };
+  mutable std::unique_ptr<Circle> known{};  // the rationals, once computed
 };
 
 /// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
-const Event& exact(const Event& e) {
-  if (e.known) return e;
+const Event::Circle& exact(const Event& e) {
+  if (e.known) return *e.known;
   const Site &a = *e.a, &b = *e.b, &c = *e.c;
   const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
   const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
   const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
-  e.cx = a.x + ux, e.cy = a.y + uy, e.R = ux * ux + uy * uy;
-  e.known = true;
-  return e;
+  e.known = std::make_unique<Event::Circle>(Event::Circle{a.x + ux, a.y + uy, ux * ux + uy * uy});
+  return *e.known;
 }
 
 /// The enclosure of the event's y, cy + √R, by the same formula in intervals.
@@ -102,7 +104,7 @@ Interval event_y(const Site& a, const Site& b, const Site& c) {
 /// The order of events: sign(e − site) by y then x, a circle event first at one point.
 Sign event_vs_site(const Event& ev, const Site& s) {
   if (const int f = (ev.yi - s.yi).sign(); f != 2) return static_cast<Sign>(f);
-  const Event& e = exact(ev);
+  const Event::Circle& e = exact(ev);
   const Sign y = root_sign(e.cy - s.y, Rational(1), e.R);
   if (y != ZERO) return y;
   const Sign x = sign_of(e.cx - s.x);
@@ -112,7 +114,7 @@ Sign event_vs_site(const Event& ev, const Site& s) {
 /// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
 Sign event_vs_event(const Event& ev, const Event& fv) {
   if (const int s = (ev.yi - fv.yi).sign(); s != 2) return static_cast<Sign>(s);
-  const Event &e = exact(ev), &f = exact(fv);
+  const Event::Circle &e = exact(ev), &f = exact(fv);
   const Rational d = e.cy - f.cy;
   const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
   Sign y;
@@ -131,7 +133,6 @@ struct SweepEdge {
 
 /// A vertex of the sweep: its centre and its three sites (counter-clockwise).
 struct SweepVertex {
-  Rational x, y;
   Index a, b, c;
 };
 
@@ -203,8 +204,7 @@ class Sweep {
     Arc* l = m->prev;
     Arc* r = m->next;
     const int v = int(vertices.size());
-    const Event& x = exact(ev_[e]);
-    vertices.push_back({x.cx, x.cy, s_[l->site].id, s_[m->site].id, s_[r->site].id});
+    vertices.push_back({ s_[l->site].id, s_[m->site].id, s_[r->site].id});
     edges[m->edge].end[m->end] = v;
     edges[r->edge].end[r->end] = v;
     const int g = new_edge(l->site, r->site);
@@ -282,10 +282,13 @@ FortuneDiagram fortune(std::span<const Point> points) {
   sweep.run();
   // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
   const auto& V = sweep.vertices;
+  std::vector<ExactPoint> centre;  // exact, homogeneous (voronoi.hpp's circumcentre)
+  centre.reserve(V.size());
+  for (const SweepVertex& v : V) centre.push_back(circumcentre(points[v.a], points[v.b], points[v.c]));
   std::vector<int> up(V.size());
   std::iota(up.begin(), up.end(), 0);
   for (const SweepEdge& e : sweep.edges)
-    if (e.end[0] >= 0 && e.end[1] >= 0 && V[e.end[0]].x == V[e.end[1]].x && V[e.end[0]].y == V[e.end[1]].y)
+    if (e.end[0] >= 0 && e.end[1] >= 0 && centre[e.end[0]] == centre[e.end[1]])
       up[find(up, e.end[0])] = find(up, e.end[1]);
   std::vector<int> number(V.size(), -1);
   std::vector<std::vector<Index>> around;
@@ -293,7 +296,7 @@ FortuneDiagram fortune(std::span<const Point> points) {
     const int r = find(up, int(v));
     if (number[r] < 0) {
       number[r] = int(out.vertices.size());
-      out.vertices.push_back(circumcentre(points[V[r].a], points[V[r].b], points[V[r].c]));
+      out.vertices.push_back(centre[r]);
       around.emplace_back();
     }
     number[v] = number[r];
@@ -301,8 +304,6 @@ FortuneDiagram fortune(std::span<const Point> points) {
   }
   //> fortune-around
   // The sites of each vertex, counter-clockwise around its centre (exact: rationals).
-  std::vector<std::pair<Rational, Rational>> centre(around.size());
-  for (std::size_t v = 0; v < V.size(); ++v) centre[number[v]] = {V[v].x, V[v].y};
   using Vec = std::pair<Rational, Rational>;
   auto lower = [](const Vec& v) { return sgn(v.second) < 0 || (sgn(v.second) == 0 && sgn(v.first) < 0); };
   for (std::size_t k = 0; k < around.size(); ++k) {
@@ -315,10 +316,11 @@ FortuneDiagram fortune(std::span<const Point> points) {
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
     std::vector<std::pair<Vec, Index>> d;
+    const ExactPoint& o = out.vertices[k];
+    const Rational ox = Rational(o.x()) / Rational(o.w()), oy = Rational(o.y()) / Rational(o.w());
     for (Index x : a) {
       const Point& p = points[x];
-      d.push_back({{Rational(p.x()) / Rational(p.w()) - centre[k].first,
-                    Rational(p.y()) / Rational(p.w()) - centre[k].second}, x});
+      d.push_back({{Rational(p.x()) / Rational(p.w()) - ox, Rational(p.y()) / Rational(p.w()) - oy}, x});
     }
     std::sort(d.begin(), d.end(), [&](const auto& p, const auto& q) {
       const bool hp = lower(p.first), hq = lower(q.first);
