@@ -45,15 +45,16 @@ struct Site {
 };
 
 //> fortune-breakpoint
-/// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right) when
-/// the sweep line is y = L, for the site s = (a, L) (file comment of fortune.hpp). The
-/// same formula in intervals decides first when it can.
+/// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right)
+/// when the sweep line is y = L, for the site s = (a, L) (file comment of fortune.hpp).
+/// The same formula in intervals decides first when it can.
 Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
   {
     const Interval dp = p.yi - s.yi, dq = q.yi - s.yi, den = dq - dp;
     if (const int sd = den.sign(); sd != 2) {
       const Interval dx = p.xi - q.xi, dy = p.yi - q.yi;
-      const Interval r = dq * p.xi - dp * q.xi - s.xi * den - sqrt(dp * dq * (dx * dx + dy * dy));
+      const Interval C = dp * dq * (dx * dx + dy * dy);
+      const Interval r = dq * p.xi - dp * q.xi - s.xi * den - sqrt(C);
       if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
     }
   }
@@ -61,7 +62,8 @@ Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
   const Rational dp = p.y - L, dq = q.y - L;
   if (dp == dq) return sign_of(Rational(p.x + q.x) / 2 - a);
   const Rational dx = p.x - q.x, dy = p.y - q.y;
-  const Rational A = dq * p.x - dp * q.x - a * (dq - dp), C = dp * dq * (dx * dx + dy * dy);
+  const Rational A = dq * p.x - dp * q.x - a * (dq - dp);
+  const Rational C = dp * dq * (dx * dx + dy * dy);
   return sign_of(dq - dp) * root_sign(A, Rational(-1), C);
 }
 //< fortune-breakpoint

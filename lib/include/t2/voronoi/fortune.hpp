@@ -35,7 +35,7 @@
 ///    / (d_q − d_p) when d_p ≠ d_q (the midpoint of x_p, x_q when d_p = d_q), so sign(x − a) =
 ///    sign(d_q − d_p) · sign(A − √C) with A = d_q x_p − d_p x_q − a(d_q − d_p), C = d_p d_q |pq|².
 ///  All A + B√C signs go through `sign_of_root_sum` (sign_sqrt.hpp), on integers (the rationals
-///  times their positive denominators). Three consecutive arcs make a circle event exactly when
+///  times their positive denominators), after an interval filter that decides most of them. Three consecutive arcs make a circle event exactly when
 ///  their sites turn counter-clockwise (`orient` > 0).
 ///
 /// **Degeneracies** (seed 001). Duplicate sites are reduced to the first of each group (listed in
@@ -47,8 +47,9 @@
 /// zero, which are contracted, so four or more cells meet at one vertex and no edge has length
 /// zero. Collinear sites give no circle event: only `lines`.
 ///
-/// **Cost.** O(n log n) events and tree operations (expected, the treap); every predicate on
-/// GMP rationals (no floating-point filter yet).
+/// **Cost.** O(n log n) expected (O(n) events, each with O(log n) queue and treap steps). Each
+/// predicate is first evaluated in interval arithmetic with certified bounds (doubles); only the
+/// signs whose interval holds 0 are computed on GMP rationals.
 
 #include <span>
 #include <utility>
