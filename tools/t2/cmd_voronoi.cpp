@@ -128,8 +128,8 @@ t2::Scene answer(const std::vector<t2::Point>& P, const t2::FortuneDiagram& fd) 
   for (const auto& r : fd.rays)
     s.segments.push_back(t2::SceneSegment{scene_point(t2::to_double(fd.vertices[r.a])),
                                           scene_point(t2::to_double(reduced(r.end))), 0, st});
-  for (const t2::ExactPoint& v : fd.vertices)
-    s.points.push_back(scene_point(t2::to_double(v), style_of("color=red marker=dot layer=2")));
+  const t2::SceneStyle dot = style_of("color=red marker=dot layer=2");
+  for (const t2::ExactPoint& v : fd.vertices) s.points.push_back(scene_point(t2::to_double(v), dot));
   draw_lines(P, fd.lines, s);
   return s;
 }

@@ -11,6 +11,7 @@
 #include "fortune_beach.hpp"
 #include "fortune_interval.hpp"
 #include "t2/kernel/error.hpp"
+#include "t2/kernel/incircle.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/sign_sqrt.hpp"
 
@@ -283,14 +284,18 @@ FortuneDiagram fortune(std::span<const Point> points) {
   Sweep sweep(u, points);
   sweep.run();
   // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
+  // Both ends of an edge between s and t are circles through s and t (the edge's breakpoint
+  // runs between their arcs), so they are one point exactly when the third site of one end is
+  // on the circle of the other: in_circle = 0 (exact, filtered).
   const auto& V = sweep.vertices;
-  std::vector<ExactPoint> centre;  // exact, homogeneous (voronoi.hpp's circumcentre)
-  centre.reserve(V.size());
-  for (const SweepVertex& v : V) centre.push_back(circumcentre(points[v.a], points[v.b], points[v.c]));
+  auto third = [](const SweepVertex& v, const SweepEdge& e) {
+    return v.a != e.s && v.a != e.t ? v.a : v.b != e.s && v.b != e.t ? v.b : v.c;
+  };
   std::vector<int> up(V.size());
   std::iota(up.begin(), up.end(), 0);
   for (const SweepEdge& e : sweep.edges)
-    if (e.end[0] >= 0 && e.end[1] >= 0 && centre[e.end[0]] == centre[e.end[1]])
+    if (e.end[0] >= 0 && e.end[1] >= 0 &&
+        in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO)
       up[find(up, e.end[0])] = find(up, e.end[1]);
   std::vector<int> number(V.size(), -1);
   std::vector<std::vector<Index>> around;
@@ -298,7 +303,7 @@ FortuneDiagram fortune(std::span<const Point> points) {
     const int r = find(up, int(v));
     if (number[r] < 0) {
       number[r] = int(out.vertices.size());
-      out.vertices.push_back(centre[r]);
+      out.vertices.push_back(circumcentre(points[V[r].a], points[V[r].b], points[V[r].c]));
       around.emplace_back();
     }
     number[v] = number[r];
