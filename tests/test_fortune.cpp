@@ -63,9 +63,9 @@ std::tuple<Q2, Q2, Index, Index> edge_key(Q2 a, Q2 b, Index s, Index t) {
 FrontHalf of(const FortuneDiagram& fd) {
   FrontHalf h;
   std::vector<Q2> c;
-  for (Index v = 0; v < fd.vertices.size(); ++v) {
-    EXPECT_GT(sgn(fd.vertices[v].w()), 0);
-    c.push_back(cartesian(fd.vertices[v]));
+  for (Index v = 0; v < fd.size(); ++v) {
+    EXPECT_GT(sgn(fd.vertex(v).w()), 0);
+    c.push_back(cartesian(fd.vertex(v)));
     EXPECT_TRUE(h.vertices.emplace(c.back(), rotated(fd.vertex_sites(v))).second) << "two vertices at one point";
   }
   for (const auto& e : fd.edges) h.edges.insert(edge_key(c[e.a], c[e.b], e.s, e.t));
@@ -143,8 +143,8 @@ std::string certificate_error(const std::vector<Point>& p, const FortuneDiagram&
   std::vector<Q2> s;
   for (const Point& q : p) s.push_back(site_of(q));
   std::map<Q2, std::set<Index>> at;
-  for (Index v = 0; v < fd.vertices.size(); ++v) {
-    const Q2 c = cartesian(fd.vertices[v]);
+  for (Index v = 0; v < fd.size(); ++v) {
+    const Q2 c = cartesian(fd.vertex(v));
     const auto vs = fd.vertex_sites(v);
     if (vs.size() < 3) return "vertex with fewer than three cells";
     const mpq_class r = dist2(c, s[vs[0]]);
@@ -211,8 +211,8 @@ TEST(Fortune, LatticeManyCocircularQuadruples) {
   for (int i = 0; i < 20; ++i)
     for (int j = 0; j < 20; ++j) p.push_back(Point(1, i, j));
   const FortuneDiagram fd = fortune(p);
-  EXPECT_EQ(fd.vertices.size(), 19u * 19u);  // one vertex per square, four cells each
-  for (Index v = 0; v < fd.vertices.size(); ++v) EXPECT_EQ(fd.vertex_sites(v).size(), 4u);
+  EXPECT_EQ(fd.size(), 19u * 19u);  // one vertex per square, four cells each
+  for (Index v = 0; v < fd.size(); ++v) EXPECT_EQ(fd.vertex_sites(v).size(), 4u);
   expect_front_half(p);
   std::mt19937 rng(5);
   for (int k = 0; k < 5; ++k) expect_front_half(testing::grid_sites(150, 4, 1, rng));  // dense: many duplicates
@@ -223,7 +223,7 @@ TEST(Fortune, SitesOnOneCircle) {
   for (auto [x, y] : std::vector<std::pair<int, int>>{{25, 0}, {24, 7}, {20, 15}, {15, 20}, {7, 24}, {0, 25}, {-7, 24}, {-15, 20}, {-20, 15}, {-24, 7}, {-25, 0}, {-24, -7}, {-20, -15}, {-15, -20}, {-7, -24}, {0, -25}, {7, -24}, {15, -20}, {20, -15}, {24, -7}})
     p.push_back(Point(1, x, y));
   const FortuneDiagram fd = fortune(p);
-  ASSERT_EQ(fd.vertices.size(), 1u);
+  ASSERT_EQ(fd.size(), 1u);
   EXPECT_EQ(fd.vertex_sites(0).size(), 20u);
   EXPECT_EQ(fd.edges.size(), 0u);
   EXPECT_EQ(fd.rays.size(), 20u);
@@ -241,7 +241,7 @@ TEST(Fortune, DuplicatesCollinearAndRows) {
                     std::vector<Point>{Point(1, 0, 5), Point(1, 3, 5), Point(1, 1, 5), Point(1, 9, 5)},
                     std::vector<Point>{Point(1, 2, 0), Point(1, 2, 7), Point(1, 2, 3)}}) {
     const FortuneDiagram c = fortune(line);
-    EXPECT_TRUE(c.vertices.empty());
+    EXPECT_TRUE(c.size() == 0);
     EXPECT_EQ(c.lines.size(), line.size() - 1);
     std::set<std::pair<Index, Index>> got;
     for (auto [s, t] : c.lines) got.insert({std::min(s, t), std::max(s, t)});
@@ -261,11 +261,11 @@ TEST(Fortune, DuplicatesCollinearAndRows) {
 TEST(Fortune, TwoAndThreeSitesAndBreakpointHits) {
   const std::vector<Point> two{Point(1, 0, 0), Point(1, 1, 3)};
   const FortuneDiagram a = fortune(two);
-  EXPECT_TRUE(a.vertices.empty());
+  EXPECT_TRUE(a.size() == 0);
   ASSERT_EQ(a.lines.size(), 1u);
   const std::vector<Point> three{Point(1, 0, 0), Point(1, 4, 0), Point(1, 1, 3)};
   const FortuneDiagram b = fortune(three);
-  ASSERT_EQ(b.vertices.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
   EXPECT_EQ(b.rays.size(), 3u);
   expect_front_half(three);
   // The third site on the breakpoint of the first two at its sweep position; then a circle event
@@ -298,7 +298,7 @@ TEST(Fortune, BoostPolygonCounts) {
     boost::polygon::construct_voronoi(q.begin(), q.end(), &vd);
     const FortuneDiagram fd = fortune(p);
     if (!fd.duplicates.empty()) continue;  // Boost keeps no record of which it dropped
-    EXPECT_EQ(fd.vertices.size(), vd.num_vertices());
+    EXPECT_EQ(fd.size(), vd.num_vertices());
     EXPECT_EQ(fd.edges.size() + fd.rays.size() + fd.lines.size(), vd.num_edges() / 2);
   }
 }

@@ -103,8 +103,8 @@ t2::Scene answer(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd) 
 
 std::string listing(const t2::FortuneDiagram& fd) {
   std::string out;
-  for (Index v = 0; v < fd.vertices.size(); ++v) {
-    const t2::ExactPoint p = reduced(fd.vertices[v]);
+  for (Index v = 0; v < fd.size(); ++v) {
+    const t2::ExactPoint p = reduced(fd.vertex(v));
     out += fmt::format("vertex {} {} {} ", p.w().get_str(), p.x().get_str(), p.y().get_str());
     for (Index s : fd.vertex_sites(v)) out += fmt::format(" {}", s);
     out += '\n';
@@ -123,13 +123,13 @@ t2::Scene answer(const std::vector<t2::Point>& P, const t2::FortuneDiagram& fd) 
   t2::Scene s;
   const t2::SceneStyle st = style_of("color=red width=2 layer=1");
   for (const auto& e : fd.edges)
-    s.segments.push_back(t2::SceneSegment{scene_point(t2::to_double(fd.vertices[e.a])),
-                                          scene_point(t2::to_double(fd.vertices[e.b])), 0, st});
+    s.segments.push_back(t2::SceneSegment{scene_point(t2::to_double(fd.vertex(e.a))),
+                                          scene_point(t2::to_double(fd.vertex(e.b))), 0, st});
   for (const auto& r : fd.rays)
-    s.segments.push_back(t2::SceneSegment{scene_point(t2::to_double(fd.vertices[r.a])),
+    s.segments.push_back(t2::SceneSegment{scene_point(t2::to_double(fd.vertex(r.a))),
                                           scene_point(t2::to_double(reduced(r.end))), 0, st});
   const t2::SceneStyle dot = style_of("color=red marker=dot layer=2");
-  for (const t2::ExactPoint& v : fd.vertices) s.points.push_back(scene_point(t2::to_double(v), dot));
+  for (Index v = 0; v < fd.size(); ++v) s.points.push_back(scene_point(t2::to_double(fd.vertex(v)), dot));
   draw_lines(P, fd.lines, s);
   return s;
 }
@@ -148,7 +148,7 @@ int run_fortune(const Options& o, const t2::Scene& scene, const std::vector<t2::
   write_answer(o.drawing, scene, answer(P, fd),
                fmt::format("t2 voronoi --algorithm fortune {}: {} vertices, {} edges, {} rays (draw them over their "
                            "input: t2 draw FILE THIS)",
-                           scene.name, fd.vertices.size(), fd.edges.size(), fd.rays.size()));
+                           scene.name, fd.size(), fd.edges.size(), fd.rays.size()));
   fmt::print("{}", listing(fd));
   return kOk;
 }

@@ -302,8 +302,8 @@ FortuneDiagram fortune(std::span<const Point> points) {
   for (std::size_t v = 0; v < V.size(); ++v) {
     const int r = find(up, int(v));
     if (number[r] < 0) {
-      number[r] = int(out.vertices.size());
-      out.vertices.push_back(circumcentre(points[V[r].a], points[V[r].b], points[V[r].c]));
+      number[r] = int(out.circles.size());
+      out.circles.push_back({V[r].a, V[r].b, V[r].c});
       around.emplace_back();
     }
     number[v] = number[r];
@@ -323,7 +323,7 @@ FortuneDiagram fortune(std::span<const Point> points) {
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
     std::vector<std::pair<Vec, Index>> d;
-    const ExactPoint& o = out.vertices[k];
+    const ExactPoint o = out.vertex(Index(k));
     const Rational ox = Rational(o.x()) / Rational(o.w()), oy = Rational(o.y()) / Rational(o.w());
     for (Index x : a) {
       const Point& p = points[x];

@@ -8,7 +8,7 @@
 /// vertices are the nearest-point Voronoi vertices, its back vertices the antipodes of the
 /// farthest-point ones, and each unbounded edge of the plane is an edge from a front vertex
 /// across Ω to a back vertex. Fortune's sweep sees the plane only. It gives
-///  - the same front vertices (`vertices`, the same exact circumcentres, from `circumcentre`),
+///  - the same front vertices (`vertex(v)`, the same exact circumcentres, from `circumcentre`),
 ///    each with the sites of its cells counter-clockwise around it;
 ///  - the same edges between two front vertices (`edges`);
 ///  - for each edge of `voronoi` that leaves the front side, the ray from its front vertex to the
@@ -51,6 +51,7 @@
 /// predicate is first evaluated in interval arithmetic with certified bounds (doubles); only the
 /// signs whose interval holds 0 are computed on GMP rationals.
 
+#include <array>
 #include <span>
 #include <utility>
 #include <vector>
@@ -71,8 +72,9 @@ struct FortuneDiagram {
     Index s;          ///< the site on one side
     Index t;          ///< the site on the other side
   };
-  std::vector<Point> sites;          ///< the sites, as given
-  std::vector<ExactPoint> vertices;  ///< the Voronoi vertices (w > 0), exact circumcentres
+  std::vector<Point> sites;  ///< the sites, as given
+  /// Three sites of each Voronoi vertex, counter-clockwise: the vertex is their circumcentre.
+  std::vector<std::array<Index, 3>> circles;
   /// The cells at vertex v, counter-clockwise around it, are cells[first[v] .. first[v + 1]).
   std::vector<Index> first;
   std::vector<Index> cells;                         ///< the sites at each vertex, one after the other
@@ -81,6 +83,13 @@ struct FortuneDiagram {
   std::vector<std::pair<Index, Index>> lines;       ///< bisectors without a vertex
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept): sites owning no cell
 
+  /// The number of Voronoi vertices.
+  std::size_t size() const { return circles.size(); }
+  /// Vertex v (w > 0): its exact homogeneous coordinates, `circumcentre` of `circles[v]`
+  /// (constructed on each call: GMP integers, as `VoronoiDiagram::vertex`).
+  ExactPoint vertex(Index v) const {
+    return circumcentre(sites[circles[v][0]], sites[circles[v][1]], sites[circles[v][2]]);
+  }
   /// The sites whose cells meet at vertex v, counter-clockwise around it.
   std::span<const Index> vertex_sites(Index v) const {
     return std::span<const Index>(cells).subspan(first[v], first[v + 1] - first[v]);
