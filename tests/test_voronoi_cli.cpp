@@ -1,11 +1,12 @@
-// t2 voronoi from the command line: the format of the README (vertex, edge, line), the library's
-// answer on generated input, cocircular points, the exit statuses of bad and undefined
-// input, and the picture.
+// t2 voronoi from the command line: the format of the README (vertex, edge, ray, line), the
+// library's answer on generated input (the dual, and Fortune's front half), cocircular points,
+// the exit statuses of bad and undefined input, and the picture.
 #include <algorithm>
 #include <sstream>
 
 #include "cli_testing.hpp"
 #include "t2/kernel/scene.hpp"
+#include "t2/voronoi/fortune.hpp"
 #include "t2/voronoi/voronoi.hpp"
 
 namespace t2::testing {
@@ -18,6 +19,7 @@ struct Parsed {
   std::vector<std::vector<int>> sites;       // the sites of each vertex
   std::vector<std::array<int, 4>> edges;     // A B s t
   std::vector<std::pair<int, int>> lines;    // s t
+  std::vector<std::string> rays;             // "A  0 X Y  s t" as printed
 };
 
 Parsed parse(const std::string& out) {
@@ -43,6 +45,8 @@ Parsed parse(const std::string& out) {
       std::pair<int, int> s;
       l >> s.first >> s.second;
       p.lines.push_back(s);
+    } else if (kind == "ray") {
+      p.rays.push_back(line.substr(4));
     } else {
       ADD_FAILURE() << "unknown line: " << line;
     }
@@ -114,6 +118,40 @@ TEST_F(VoronoiCli, BadAndUndefinedInput) {
   EXPECT_EQ(u.status, 3);
   EXPECT_TRUE(has(u.err, "undefined")) << u.err;
   EXPECT_TRUE(u.out.empty());
+}
+
+TEST_F(VoronoiCli, FortuneGivesTheFrontHalf) {
+  write("sq.t2", "1 0\n0 1\n-1 0\n0 -1\n");
+  const Result r = t2("voronoi sq.t2 --algorithm fortune");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Parsed p = parse(r.out);
+  ASSERT_EQ(p.coords, (std::vector<std::string>{"1 0 0"})) << r.out;  // the front vertex only
+  EXPECT_EQ(rotated(p.sites[0]), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_TRUE(p.edges.empty());
+  std::vector<std::string> rays = p.rays;  // the four rays leave between two neighbours (s t
+  std::sort(rays.begin(), rays.end());     // in the sweep's order)
+  EXPECT_EQ(rays, (std::vector<std::string>{"0  0 -1 -1  3 2", "0  0 -1 1  2 1", "0  0 1 -1  3 0",
+                                            "0  0 1 1  0 1"})) << r.out;
+  ASSERT_EQ(t2("gen uniform --n 300 --seed 7 -o pts.t2").status, 0);
+  const Result g = t2("voronoi pts.t2 --algorithm fortune");
+  ASSERT_EQ(g.status, 0) << g.err;
+  const Parsed q = parse(g.out);
+  std::vector<Point> pts;
+  for (const ScenePoint& x : read_scene(dir_ / "pts.t2").points) pts.push_back(x.point);
+  const FortuneDiagram fd = fortune(pts);
+  ASSERT_EQ(q.coords.size(), fd.size());
+  EXPECT_EQ(q.edges.size(), fd.edges.size());
+  EXPECT_EQ(q.rays.size(), fd.rays.size());
+  for (FortuneDiagram::Index v = 0; v < fd.size(); ++v) {
+    std::istringstream c(q.coords[v]);
+    std::string w, x, y;
+    c >> w >> x >> y;
+    EXPECT_EQ(ExactPoint(Integer(w), Integer(x), Integer(y)), fd.vertex(v));
+  }
+  write("back.t2", "0 0\n1 0\n-1 2 3\n");  // a back point: Fortune's sweep refuses it
+  const Result b = t2("voronoi back.t2 --algorithm fortune");
+  EXPECT_EQ(b.status, 3);
+  EXPECT_TRUE(has(b.err, "not on the front side")) << b.err;
 }
 
 TEST_F(VoronoiCli, DrawsTheDiagram) {
