@@ -38,15 +38,22 @@ t2::ExactPoint reduced(const t2::ExactPoint& v) {
   return t2::ExactPoint(t2::Integer(v.w() / g), t2::Integer(v.x() / g), t2::Integer(v.y() / g));
 }
 
-std::string listing(const t2::VoronoiDiagram& vd) {
+/// The `vertex W X Y  s1 s2 ...` lines and the `edge A B  s t` lines of a diagram (either kind).
+template <class Diagram>
+std::string vertices_and_edges(const Diagram& d) {
   std::string out;
-  for (Index v = 0; v < vd.size(); ++v) {
-    const t2::ExactPoint p = reduced(vd.vertex(v));
+  for (Index v = 0; v < d.size(); ++v) {
+    const t2::ExactPoint p = reduced(d.vertex(v));
     out += fmt::format("vertex {} {} {} ", p.w().get_str(), p.x().get_str(), p.y().get_str());
-    for (Index s : vd.vertex_sites(v)) out += fmt::format(" {}", s);
+    for (Index s : d.vertex_sites(v)) out += fmt::format(" {}", s);
     out += '\n';
   }
-  for (const auto& e : vd.edges) out += fmt::format("edge {} {}  {} {}\n", e.a, e.b, e.s, e.t);
+  for (const auto& e : d.edges) out += fmt::format("edge {} {}  {} {}\n", e.a, e.b, e.s, e.t);
+  return out;
+}
+
+std::string listing(const t2::VoronoiDiagram& vd) {
+  std::string out = vertices_and_edges(vd);
   for (auto [s, t] : vd.lines) out += fmt::format("line {} {}\n", s, t);
   return out;
 }
@@ -102,14 +109,7 @@ t2::Scene answer(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd) 
 }
 
 std::string listing(const t2::FortuneDiagram& fd) {
-  std::string out;
-  for (Index v = 0; v < fd.size(); ++v) {
-    const t2::ExactPoint p = reduced(fd.vertex(v));
-    out += fmt::format("vertex {} {} {} ", p.w().get_str(), p.x().get_str(), p.y().get_str());
-    for (Index s : fd.vertex_sites(v)) out += fmt::format(" {}", s);
-    out += '\n';
-  }
-  for (const auto& e : fd.edges) out += fmt::format("edge {} {}  {} {}\n", e.a, e.b, e.s, e.t);
+  std::string out = vertices_and_edges(fd);
   for (const auto& r : fd.rays) {
     const t2::ExactPoint q = reduced(r.end);
     out += fmt::format("ray {}  0 {} {}  {} {}\n", r.a, q.x().get_str(), q.y().get_str(), r.s, r.t);
