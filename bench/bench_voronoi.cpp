@@ -2,6 +2,7 @@
 // Voronoi sweep and CGAL's Delaunay dual, on the same points in one run: CPU times and ratios.
 //
 //   bench_voronoi --benchmark_filter=Dual     10⁵ and 10⁶ uniform points
+//   bench_voronoi --benchmark_filter=Fortune  t2::fortune against Boost.Polygon, 10⁵ and 10⁶
 //
 // The points: t2::gen's uniform points of [-1, 1)², scaled by 2³⁰ and rounded to integers,
 // because Boost.Polygon takes 32-bit integer coordinates; every library gets these integers
@@ -13,6 +14,8 @@
 //    are constructed on demand by `vertex(v)`, not here;
 //  - boost: boost::polygon::construct_voronoi into a voronoi_diagram<double> (the sweep, exact
 //    predicates, vertices as doubles);
+//  - fortune: t2::fortune (Fortune's sweep, exact, the front half: exact vertices as GMP
+//    integers, their cells, the edges and the rays to Ω);
 //  - cgal_dt: CGAL's Delaunay_triangulation_2 with Epick (range insertion, spatially sorted);
 //  - cgal_dual: cgal_dt plus, for every finite face, its dual (the circumcentre, a double
 //    construction) and a pass over the finite edges (the Voronoi edges) — the Delaunay-dual
@@ -31,6 +34,7 @@
 
 #include "t2/gen/generate.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/voronoi/fortune.hpp"
 #include "t2/voronoi/voronoi.hpp"
 
 namespace {
@@ -54,6 +58,17 @@ std::vector<std::pair<int, int>> integer_points(std::size_t n) {
     out.emplace_back(static_cast<int>(std::lround(p.x() / p.w() * 1073741824.0)),
                      static_cast<int>(std::lround(p.y() / p.w() * 1073741824.0)));
   return out;
+}
+
+/// Boost.Polygon's sweep on bp: its CPU time; its vertex count goes to a counter.
+double time_boost(const std::vector<boost::polygon::point_data<int>>& bp, benchmark::State& state) {
+  boost::polygon::voronoi_diagram<double> bvd;
+  const double t0 = cpu_now();
+  boost::polygon::construct_voronoi(bp.begin(), bp.end(), &bvd);
+  benchmark::DoNotOptimize(bvd.num_vertices());
+  const double t = cpu_now() - t0;
+  state.counters["boost_vertices"] = double(bvd.num_vertices());
+  return t;
 }
 
 void Dual(benchmark::State& state) {
@@ -82,15 +97,7 @@ void Dual(benchmark::State& state) {
       tv += t1 - t0;
       state.counters["t2_vertices"] = double(vd.size());
     }
-    {
-      boost::polygon::voronoi_diagram<double> bvd;
-      t0 = cpu_now();
-      boost::polygon::construct_voronoi(bp.begin(), bp.end(), &bvd);
-      benchmark::DoNotOptimize(bvd.num_vertices());
-      t1 = cpu_now();
-      tb += t1 - t0;
-      state.counters["boost_vertices"] = double(bvd.num_vertices());
-    }
+    tb += time_boost(bp, state);
     {
       t0 = cpu_now();
       CgalDelaunay dt(cp.begin(), cp.end());
@@ -118,5 +125,31 @@ void Dual(benchmark::State& state) {
   state.counters["voronoi/boost"] = tv / tb;
 }
 BENCHMARK(Dual)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void Fortune(benchmark::State& state) {
+  const auto ip = integer_points(static_cast<std::size_t>(state.range(0)));
+  std::vector<t2::Point> pts;
+  std::vector<boost::polygon::point_data<int>> bp;
+  for (auto [x, y] : ip) {
+    pts.push_back(t2::Point::cartesian(x, y));
+    bp.emplace_back(x, y);
+  }
+  double tf = 0, tb = 0;
+  for (auto _ : state) {
+    const double t0 = cpu_now();
+    {
+      const t2::FortuneDiagram fd = t2::fortune(pts);
+      benchmark::DoNotOptimize(fd.size());
+      state.counters["t2_vertices"] = double(fd.size());
+    }
+    tf += cpu_now() - t0;
+    tb += time_boost(bp, state);
+  }
+  const double k = double(state.iterations());
+  state.counters["fortune_s"] = tf / k;
+  state.counters["boost_s"] = tb / k;
+  state.counters["fortune/boost"] = tf / tb;
+}
+BENCHMARK(Fortune)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -1,8 +1,11 @@
-// The Voronoi diagram of T² (chapter 11, t2/voronoi/voronoi.hpp), one registration: timed by
-// `t2 bench` on points of the plane; not yet animated. Its peers (Boost.Polygon's sweep, CGAL's
+// The Voronoi diagram of T² (chapter 11, t2/voronoi/voronoi.hpp) and its front half by
+// Fortune's sweep (t2/voronoi/fortune.hpp): timed by `t2 bench` on points of the plane; not yet
+// animated. Fortune's answer is the front half only (its vertices are the dual's front vertices),
+// so it is a problem of its own, "voronoi-front": the sizes `t2 bench` compares would differ. Its peers (Boost.Polygon's sweep, CGAL's
 // Delaunay and its dual) are timed on the same integer points by bench/bench_voronoi.cpp: the
 // worker's inputs are doubles, which Boost.Polygon does not take.
 #include "algorithms/registry.hpp"
+#include "t2/voronoi/fortune.hpp"
 #include "t2/voronoi/voronoi.hpp"
 
 namespace t2cli::algorithms {
@@ -16,6 +19,16 @@ T2_ALGORITHM({.name = "voronoi",  // what `t2 voronoi` runs
               .title = "the Voronoi diagram of T2 (the dual)",
               .time = [](BenchInput& in) -> Timed {
                 return [&P = in.points] { return t2::voronoi(std::span<const t2::Point>(P)).size(); };
+              }});
+
+T2_PROBLEM({"voronoi-front", "front vertices", Input::plane});
+
+T2_ALGORITHM({.name = "fortune",  // what `t2 voronoi --algorithm fortune` runs
+              .problem = "voronoi-front",
+              .summary = "t2::fortune: Fortune's sweep, the front half of the Voronoi diagram, exact (seed 001)",
+              .title = "Fortune's sweep",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] { return t2::fortune(std::span<const t2::Point>(P)).size(); };
               }});
 
 }  // namespace

@@ -1,0 +1,359 @@
+// Fortune's sweep (t2/voronoi/fortune.hpp): predicates on rationals, the sweep, and the
+// contraction of zero-length edges at cocircular sites.
+#include "t2/voronoi/fortune.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <queue>
+#include <string>
+
+#include "fortune_beach.hpp"
+#include "fortune_interval.hpp"
+#include "t2/kernel/error.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/orient.hpp"
+#include "t2/kernel/sign_sqrt.hpp"
+
+namespace t2 {
+
+namespace {
+
+using Index = FortuneDiagram::Index;
+using detail::Arc;
+using detail::Interval;
+
+Sign sign_of(const Rational& q) { return static_cast<Sign>(sgn(q)); }
+
+//> fortune-root-sign
+/// sign(a + b√c) for rationals, c ≥ 0: times the positive a.den · b.den · c.den it is
+/// A + B√C with A = a.num·b.den·c.den, B = b.num·a.den, C = c.num·c.den (integers), whose sign
+/// sign_of_root_sum decides (k = 1 makes A² and B²C of one total degree).
+Sign root_sign(const Rational& a, const Rational& b, const Rational& c) {
+  const Integer A = a.get_num() * b.get_den() * c.get_den(), B = b.get_num() * a.get_den(),
+                C = c.get_num() * c.get_den(), k(1);
+  return sign_of_root_sum([](const auto& A, const auto&, const auto&, const auto& k) { return A * k; },
+                          [](const auto&, const auto& B, const auto&, const auto&) { return B; },
+                          [](const auto&, const auto&, const auto& C, const auto& k) { return C * k; }, A, B, C, k);
+}
+//< fortune-root-sign
+
+/// A site as rationals, with its index in the input.
+struct Site {
+  Rational x, y;
+  Index id;
+  Interval xi, yi;  // enclosures of x and y (fortune_interval.hpp)
+};
+
+//> fortune-breakpoint
+/// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right)
+/// when the sweep line is y = L, for the site s = (a, L) (file comment of fortune.hpp).
+/// The same formula in intervals decides first when it can.
+Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
+  {
+    const Interval dp = p.yi - s.yi, dq = q.yi - s.yi, den = dq - dp;
+    if (const int sd = den.sign(); sd != 2) {
+      const Interval dx = p.xi - q.xi, dy = p.yi - q.yi;
+      const Interval C = dp * dq * (dx * dx + dy * dy);
+      const Interval r = dq * p.xi - dp * q.xi - s.xi * den - sqrt(C);
+      if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
+    }
+  }
+  const Rational &L = s.y, &a = s.x;
+  const Rational dp = p.y - L, dq = q.y - L;
+  if (dp == dq) return sign_of(Rational(p.x + q.x) / 2 - a);
+  const Rational dx = p.x - q.x, dy = p.y - q.y;
+  const Rational A = dq * p.x - dp * q.x - a * (dq - dp);
+  const Rational C = dp * dq * (dx * dx + dy * dy);
+  return sign_of(dq - dp) * root_sign(A, Rational(-1), C);
+}
+//< fortune-breakpoint
+
+/// A circle event: the circle through the sites a, b, c with centre (cx, cy) and squared
+/// radius R, at y = cy + √R. The rationals are computed when a decision first needs them
+/// (`exact`); the enclosure `yi` of cy + √R, from the sites' enclosures, decides most orders.
+struct Event {
+  const Site *a, *b, *c;
+  Interval yi;
+  Arc* arc;     // the arc it removes
+  bool valid;   // false once the arc or its neighbours changed
+  struct Circle {
+    Rational cx, cy, R;
+  };
+  mutable std::unique_ptr<Circle> known{};  // the rationals, once computed
+};
+
+/// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
+const Event::Circle& exact(const Event& e) {
+  if (e.known) return *e.known;
+  const Site &a = *e.a, &b = *e.b, &c = *e.c;
+  const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
+  const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
+  e.known = std::make_unique<Event::Circle>(Event::Circle{a.x + ux, a.y + uy, ux * ux + uy * uy});
+  return *e.known;
+}
+
+/// The enclosure of the event's y, cy + √R, by the same formula in intervals.
+Interval event_y(const Site& a, const Site& b, const Site& c) {
+  const Interval bx = b.xi - a.xi, by = b.yi - a.yi, cx = c.xi - a.xi, cy = c.yi - a.yi;
+  const Interval D = bx * cy - by * cx, B = bx * bx + by * by, C = cx * cx + cy * cy;
+  const Interval h = recip(D + D);
+  const Interval ux = (cy * B - by * C) * h, uy = (bx * C - cx * B) * h;
+  return a.yi + uy + sqrt(ux * ux + uy * uy);
+}
+
+//> fortune-event-order
+/// The order of events: sign(e − site) by y then x, a circle event first at one point.
+Sign event_vs_site(const Event& ev, const Site& s) {
+  if (const int f = (ev.yi - s.yi).sign(); f != 2) return static_cast<Sign>(f);
+  const Event::Circle& e = exact(ev);
+  const Sign y = root_sign(e.cy - s.y, Rational(1), e.R);
+  if (y != ZERO) return y;
+  const Sign x = sign_of(e.cx - s.x);
+  return x != ZERO ? x : NEGATIVE;
+}
+
+/// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
+Sign event_vs_event(const Event& ev, const Event& fv) {
+  if (const int s = (ev.yi - fv.yi).sign(); s != 2) return static_cast<Sign>(s);
+  const Event::Circle &e = exact(ev), &f = exact(fv);
+  const Rational d = e.cy - f.cy;
+  const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
+  Sign y;
+  if (u == NEGATIVE) y = NEGATIVE;
+  else if (u == ZERO) y = sgn(f.R) > 0 ? NEGATIVE : ZERO;
+  else y = root_sign(d * d + e.R - f.R, Rational(2 * d), e.R);  // (d + √R_e)² − R_f
+  return y != ZERO ? y : sign_of(e.cx - f.cx);
+}
+//< fortune-event-order
+
+/// An edge of the sweep: its two sites and its two ends (vertex numbers, -1 while open).
+struct SweepEdge {
+  Index s, t;
+  int end[2] = {-1, -1};
+};
+
+/// A vertex of the sweep: its centre and its three sites (counter-clockwise).
+struct SweepVertex {
+  Index a, b, c;
+};
+
+/// The sweep's state.
+class Sweep {
+ public:
+  Sweep(const std::vector<Site>& sites, std::span<const Point> points) : s_(sites), p_(points) {}
+
+  //> fortune-sweep
+  void run() {
+    std::size_t i = 1;
+    beach_.start(beach_.make(0));
+    Arc* last = beach_.root;
+    for (; i < s_.size() && s_[i].y == s_[0].y; ++i) {  // the first row: vertical rays
+      Arc* n = beach_.make(int(i));
+      beach_.insert_after(last, n);
+      n->edge = new_edge(last->site, n->site), n->end = 1;
+      last = n;
+    }
+    while (i < s_.size() || !queue_.empty()) {
+      if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top()], s_[i]) < 0)) {
+        const int e = queue_.top();
+        queue_.pop();
+        if (ev_[e].valid) remove(e);
+      } else {
+        insert(int(i++));
+      }
+    }
+  }
+  //< fortune-sweep
+
+  std::vector<SweepEdge> edges;
+  std::vector<SweepVertex> vertices;
+
+ private:
+  int new_edge(int p, int q) {
+    edges.push_back({s_[p].id, s_[q].id});
+    return int(edges.size()) - 1;
+  }
+  /// The arc above the abscissa of site s (the right one on a breakpoint).
+  Arc* locate(const Site& s) const {
+    Arc* n = beach_.root;
+    for (;;) {
+      if (n->prev && breakpoint_side(s_[n->prev->site], s_[n->site], s) > 0) n = n->left;
+      else if (n->next && breakpoint_side(s_[n->site], s_[n->next->site], s) <= 0) n = n->right;
+      else return n;
+    }
+  }
+  void drop_event(Arc* a) {
+    if (a->event >= 0) ev_[a->event].valid = false, a->event = -1;
+  }
+  /// A site event: the arc above splits into two around the new arc.
+  void insert(int site) {
+    Arc* a = locate(s_[site]);
+    drop_event(a);
+    Arc* n = beach_.make(site);
+    Arc* b = beach_.make(a->site);
+    beach_.insert_after(a, n);
+    beach_.insert_after(n, b);
+    const int e = new_edge(a->site, site);
+    n->edge = e, n->end = 0;
+    b->edge = e, b->end = 1;
+    check(a);
+    check(b);
+  }
+  /// A circle event: its arc goes, a vertex and an edge start.
+  void remove(int e) {
+    Arc* m = ev_[e].arc;
+    Arc* l = m->prev;
+    Arc* r = m->next;
+    const int v = int(vertices.size());
+    vertices.push_back({ s_[l->site].id, s_[m->site].id, s_[r->site].id});
+    edges[m->edge].end[m->end] = v;
+    edges[r->edge].end[r->end] = v;
+    const int g = new_edge(l->site, r->site);
+    edges[g].end[0] = v;
+    r->edge = g, r->end = 1;
+    m->event = -1;
+    beach_.erase(m);
+    drop_event(l);
+    drop_event(r);
+    check(l);
+    check(r);
+  }
+  /// A circle event for the arc m when its neighbours' sites turn counter-clockwise.
+  void check(Arc* m) {
+    Arc* l = m->prev;
+    Arc* r = m->next;
+    if (!l || !r || l->site == r->site) return;
+    const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
+    if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
+    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
+    m->event = int(ev_.size()) - 1;
+    queue_.push(m->event);
+  }
+  struct Later {
+    const std::deque<Event>* ev;
+    bool operator()(int a, int b) const {
+      const Sign s = event_vs_event((*ev)[a], (*ev)[b]);
+      return s != ZERO ? s > 0 : a > b;
+    }
+  };
+  const std::vector<Site>& s_;
+  std::span<const Point> p_;
+  detail::BeachLine beach_;
+  std::deque<Event> ev_;
+  std::priority_queue<int, std::vector<int>, Later> queue_{Later{&ev_}};
+};
+
+/// The pole [0, ℓ_x, ℓ_y] of ℓ = p ∨ q: the point of Ω to the left of p → q.
+ExactPoint left_pole(const Point& a, const Point& b) {
+  const ExactPoint p = to_exact(a), q = to_exact(b);
+  return ExactPoint(Integer(0), Integer(p.y() * q.w() - p.w() * q.y()), Integer(p.w() * q.x() - p.x() * q.w()));
+}
+
+int find(std::vector<int>& up, int v) {
+  while (up[v] != v) v = up[v] = up[up[v]];
+  return v;
+}
+
+}  // namespace
+
+FortuneDiagram fortune(std::span<const Point> points) {
+  FortuneDiagram out;
+  out.sites.assign(points.begin(), points.end());
+  std::vector<Site> s;
+  s.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if (!(p.w() > 0))
+      throw Undefined("fortune: site " + std::to_string(i) + " " + to_string(p) +
+                      " is not on the front side (Fortune's sweep works in the plane of the front side)");
+    s.push_back({Rational(p.x()) / Rational(p.w()), Rational(p.y()) / Rational(p.w()), Index(i), {}, {}});
+  }
+  std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  std::vector<Site> u;  // distinct sites, the first of each group kept
+  u.reserve(s.size());
+  for (Site& x : s) {
+    x.xi = Interval::of(x.x), x.yi = Interval::of(x.y);
+    if (!u.empty() && u.back().x == x.x && u.back().y == x.y) out.duplicates.push_back({x.id, u.back().id});
+    else u.push_back(std::move(x));
+  }
+  std::sort(out.duplicates.begin(), out.duplicates.end());
+  out.first.push_back(0);
+  if (u.size() < 2) return out;
+  Sweep sweep(u, points);
+  sweep.run();
+  // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
+  // Both ends of an edge between s and t are circles through s and t (the edge's breakpoint
+  // runs between their arcs), so they are one point exactly when the third site of one end is
+  // on the circle of the other: in_circle = 0 (exact, filtered).
+  const auto& V = sweep.vertices;
+  auto third = [](const SweepVertex& v, const SweepEdge& e) {
+    return v.a != e.s && v.a != e.t ? v.a : v.b != e.s && v.b != e.t ? v.b : v.c;
+  };
+  std::vector<int> up(V.size());
+  std::iota(up.begin(), up.end(), 0);
+  for (const SweepEdge& e : sweep.edges)
+    if (e.end[0] >= 0 && e.end[1] >= 0 &&
+        in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO)
+      up[find(up, e.end[0])] = find(up, e.end[1]);
+  std::vector<int> number(V.size(), -1);
+  std::vector<std::vector<Index>> around;
+  for (std::size_t v = 0; v < V.size(); ++v) {
+    const int r = find(up, int(v));
+    if (number[r] < 0) {
+      number[r] = int(out.circles.size());
+      out.circles.push_back({V[r].a, V[r].b, V[r].c});
+      around.emplace_back();
+    }
+    number[v] = number[r];
+    for (Index x : {V[v].a, V[v].b, V[v].c}) around[number[v]].push_back(x);
+  }
+  //> fortune-around
+  // The sites of each vertex, counter-clockwise around its centre (exact: rationals).
+  using Vec = std::pair<Rational, Rational>;
+  auto lower = [](const Vec& v) { return sgn(v.second) < 0 || (sgn(v.second) == 0 && sgn(v.first) < 0); };
+  for (std::size_t k = 0; k < around.size(); ++k) {
+    auto& a = around[k];
+    if (a.size() == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
+      out.cells.insert(out.cells.end(), a.begin(), a.end());
+      out.first.push_back(Index(out.cells.size()));
+      continue;
+    }
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    std::vector<std::pair<Vec, Index>> d;
+    const ExactPoint o = out.vertex(Index(k));
+    const Rational ox = Rational(o.x()) / Rational(o.w()), oy = Rational(o.y()) / Rational(o.w());
+    for (Index x : a) {
+      const Point& p = points[x];
+      d.push_back({{Rational(p.x()) / Rational(p.w()) - ox, Rational(p.y()) / Rational(p.w()) - oy}, x});
+    }
+    std::sort(d.begin(), d.end(), [&](const auto& p, const auto& q) {
+      const bool hp = lower(p.first), hq = lower(q.first);
+      if (hp != hq) return hq;
+      return sgn(p.first.first * q.first.second - p.first.second * q.first.first) > 0;
+    });
+    for (const auto& x : d) out.cells.push_back(x.second);
+    out.first.push_back(Index(out.cells.size()));
+  }
+  //< fortune-around
+  for (const SweepEdge& e : sweep.edges) {
+    const int a = e.end[0] >= 0 ? number[e.end[0]] : -1, b = e.end[1] >= 0 ? number[e.end[1]] : -1;
+    if (a >= 0 && b >= 0) {
+      if (a != b) out.edges.push_back({Index(a), Index(b), e.s, e.t});
+    } else if (a < 0 && b < 0) {
+      out.lines.push_back({e.s, e.t});
+    } else {
+      const int v = std::max(a, b);
+      Index w = e.s;  // a third site of the vertex: the ray leaves it behind
+      for (Index x : out.vertex_sites(Index(v)))
+        if (x != e.s && x != e.t) w = x;
+      const bool left = orient(points[e.s], points[e.t], points[w]) == POSITIVE;
+      out.rays.push_back({Index(v), left ? left_pole(points[e.t], points[e.s]) : left_pole(points[e.s], points[e.t]), e.s, e.t});
+    }
+  }
+  return out;
+}
+
+}  // namespace t2
