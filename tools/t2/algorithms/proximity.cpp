@@ -52,6 +52,17 @@ T2_ALGORITHM({.name = "closest-pair",  // what `t2 closest-pair` runs (--algorit
                 };
               }});
 
+T2_ALGORITHM({.name = "closest-pair-divide",  // t2 closest-pair --algorithm divide
+              .problem = "closest-pair",
+              .summary = "t2::closest_pair_divide: Shamos-Hoey divide and conquer on each side of T2",
+              .title = "the closest pair in T2 (divide and conquer)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  t2::closest_pair_divide(std::span<const t2::Point>(P));
+                  return std::size_t(1);
+                };
+              }});
+
 namespace tr = t2::trace;
 
 // The circle of the sites `d` of P (one: the point, two: a diameter, three: through them) and
