@@ -22,23 +22,12 @@ int run(const ProximityOptions& o) {
   try {
     c = t2::largest_empty_circle(P);
   } catch (const t2::UndefinedEmptyCircle& e) {
-    const int line = scene.points[e.site].line, other = scene.points[e.other].line;
-    throw t2::Undefined(e.site == e.other ? fmt::format("{}:{}: {}", scene.name, line, e.what())
-                                          : fmt::format("{}:{} and line {}: {}", scene.name, line, other, e.what()));
+    throw undefined_at(scene, e.site, e.other, e.what());
   }
-  std::string out = fmt::format("{} {} {}\n", c.center.w().get_str(), c.center.x().get_str(), c.center.y().get_str());
-  for (std::size_t k = 0; k < c.on_circle.size(); ++k) out += fmt::format("{}{}", k ? " " : "", c.on_circle[k]);
-  out += "\n";
-  t2::Scene s;
-  const t2::Point z = t2::to_double(c.center);
-  s.circles.push_back(t2::SceneCircle{scene_point(z), scene_point(P[c.on_circle.front()]), 0,
-                                      style_of("color=red width=2 layer=1")});
-  s.points.push_back(scene_point(z, style_of("color=red layer=1")));
-  write_answer(o.drawing, scene, std::move(s),
-               fmt::format("t2 lec {}: the largest empty circle and its centre (draw it over its input: t2 draw "
-                           "FILE THIS)",
+  print_circle(o.drawing, scene, P, c.center, c.on_circle,
+               fmt::format("t2 lec {}: the largest empty circle and its centre (draw it over its input: t2 draw FILE "
+                           "THIS)",
                            scene.name));
-  fmt::print("{}", out);
   return kOk;
 }
 

@@ -44,12 +44,12 @@
 
 #include <cstdint>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/proximity/enclosing_circle.hpp"
 
 namespace t2 {
 
@@ -66,15 +66,10 @@ struct EmptyCircle {
 
 /// The largest empty circle is undefined for these sites (file comment): `site` and `other`
 /// are a front and a back site, or else `site` = `other` is a site on Ω or (all sites equal)
-/// the first site.
-class UndefinedEmptyCircle : public Undefined {
+/// the first site. The fields and the message are those of `UndefinedEnclosing`.
+class UndefinedEmptyCircle : public UndefinedEnclosing {
  public:
-  /// @param site, other the sites the rule names (other = site when one suffices)
-  /// @param rule the message: which rule of the file comment leaves the circle undefined
-  UndefinedEmptyCircle(std::uint32_t site, std::uint32_t other, const std::string& rule)
-      : Undefined(rule), site(site), other(other) {}
-  std::uint32_t site;   ///< the input index of the first site the rule names
-  std::uint32_t other;  ///< the second, or `site` again
+  using UndefinedEnclosing::UndefinedEnclosing;
 };
 
 /// The largest empty circle of `points` with its centre in their hull (file comment). Throws
