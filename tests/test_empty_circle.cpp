@@ -148,6 +148,48 @@ TEST(EmptyCircle, AgreesWithTheOracleOnSmallSites) {
   EXPECT_GT(defined, 100 * scale());
 }
 
+TEST(EmptyCircle, ThinTrianglesAgreeWithTheOracle) {
+  // Sites near a parabola and a few off it: nearly collinear triangles with huge circumcircles,
+  // where the double bound of the radius gives up or is loose; its pruning must keep the best.
+  for (int seed = 0; seed < 30 * scale(); ++seed) {
+    std::mt19937 rng(500 + seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Point> P;
+    for (int k = 0; k < 9; ++k) {
+      const double x = u(rng);
+      P.emplace_back(1, x, 0x1p-30 * x * x + (seed % 3 == 0 ? 0x1p-60 * u(rng) : 0));
+    }
+    for (int k = 0; k < 1 + seed % 3; ++k) P.emplace_back(1, u(rng), u(rng) * 0x1p-20);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const EmptyCircle c = largest_empty_circle(P);
+    check_answer(P, c);
+    const auto [z, r] = brute(drawn(P));
+    EXPECT_EQ(centre(c), z);
+    EXPECT_EQ(c.radius2, r);
+  }
+}
+
+TEST(EmptyCircle, LatticeTiesBetweenVoronoiVertices) {
+  // Subsets of a 5 x 5 lattice, w = 1: many Voronoi vertices of one radius, which the tie rule
+  // orders by position; the double bound must let every one of them be compared.
+  for (int seed = 0; seed < 60 * scale(); ++seed) {
+    std::mt19937 rng(900 + seed);
+    std::vector<Point> P;
+    for (int k = 0; k < 25; ++k)
+      if (std::uniform_int_distribution<int>(0, 9)(rng) < 6) P.emplace_back(1, k % 5, k / 5);
+    if (P.size() < 3) continue;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::vector<Pos> X = drawn(P);
+    bool collinear = true;
+    for (const Pos& p : X) collinear = collinear && cross(X[0], X[1], p) == 0;
+    if (collinear) continue;
+    const EmptyCircle c = largest_empty_circle(P);
+    const auto [z, r] = brute(X);
+    EXPECT_EQ(centre(c), z);
+    EXPECT_EQ(c.radius2, r);
+  }
+}
+
 TEST(EmptyCircle, CollinearAndCocircularByHand) {
   // Collinear: the widest gap, 1 → 5, halved.
   EmptyCircle c = largest_empty_circle(std::vector<Point>{{1, 0, 0}, {1, 1, 0}, {1, 5, 0}, {2, 0, 0}});

@@ -2,6 +2,8 @@
 #include "t2/proximity/empty_circle.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 
 #include "t2/kernel/lexicographic.hpp"
@@ -50,9 +52,32 @@ bool in_hull(const std::vector<Q>& H, const Q& z) {
   return sgn(cross(H[hi] - H[lo], z - H[lo])) >= 0;
 }
 
+/// An upper bound of the squared circumradius of the front points a, b, c, or +∞. When all
+/// three have w = 1 (Cartesian doubles, no rounding yet), r² = |b−a|²|c−a|²|b−c|² / 4K², K =
+/// (b−a)×(c−a). Each difference rounds once (relative u = 2⁻⁵³), each squared length then
+/// twice more and the product of three twice: Ñ ≤ N(1 + 15u) and N ≤ Ñ(1 + 16u); the cross
+/// product K̃ = fl(fl(t₁) − fl(t₂)), t = a product of two differences, is within 4.1u(|t̃₁| +
+/// |t̃₂|) < e = 2⁻⁵⁰(|t̃₁| + |t̃₂|) of K. So K² ≥ (|K̃| − e)² when |K̃| > e, and the bound
+/// Ñ·(1 + 2⁻⁴⁰) / (4(|K̃| − e)²) rounded (a few more u) is above r². Those error bounds hold
+/// while nothing underflows: so a nonzero difference must be in [2⁻¹⁵⁰, 2¹⁵⁰] (then every
+/// square, product and N is a normal double or +∞) and |K̃| − e at least 2⁻⁴⁰⁰; otherwise, and
+/// for |w| ≠ 1, the bound is +∞ and the triangle is evaluated exactly.
+double radius2_bound(const Point& a, const Point& b, const Point& c) {
+  if (a.w() != 1 || b.w() != 1 || c.w() != 1) return INFINITY;
+  const double bx = b.x() - a.x(), by = b.y() - a.y(), cx = c.x() - a.x(), cy = c.y() - a.y(), ex = b.x() - c.x(),
+               ey = b.y() - c.y();
+  for (double v : {bx, by, cx, cy, ex, ey})
+    if (v != 0 && !(std::abs(v) >= 0x1p-150 && std::abs(v) <= 0x1p150)) return INFINITY;
+  const double t1 = bx * cy, t2 = by * cx, K = t1 - t2, e = 0x1p-50 * (std::abs(t1) + std::abs(t2));
+  if (!(std::abs(K) > e)) return INFINITY;
+  const double N = (bx * bx + by * by) * (cx * cx + cy * cy) * (ex * ex + ey * ey), k = std::abs(K) - e;
+  if (!(k >= 0x1p-400)) return INFINITY;
+  return N * (1 + 0x1p-40) / (4 * k * k) * (1 + 0x1p-40);
+}
+
 // [largest-empty-circle]
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
-void candidates(const Triangulation& tr, const std::vector<Q>& X, Best& best) {
+void candidates(const Triangulation& tr, const std::vector<Point>& F, const std::vector<Q>& X, Best& best) {
   const auto edges = tr.hull_edges();
   std::vector<Index> after(X.size(), Triangulation::none);  // the hull's next vertex, counter-clockwise
   for (auto [a, b] : edges) after[a] = b;
@@ -63,15 +88,6 @@ void candidates(const Triangulation& tr, const std::vector<Q>& X, Best& best) {
     if (sgn(cross(X[a] - X[p], X[b] - X[a])) != 0) H.push_back(X[a]);
     p = a;
   } while (p != edges.front().first);
-  // The Voronoi vertices: the circumcentres of the Delaunay triangles, those in the hull.
-  for (const auto& t : tr.finite_triangles()) {
-    const Q& a = X[t[0]];
-    const Q b = X[t[1]] - a, c = X[t[2]] - a;
-    const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
-    const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // the centre minus a
-    const Q z{a.x + u.x, a.y + u.y};
-    if (in_hull(H, z)) best.offer(z, dot(u, u));
-  }
   // The crossings: along each hull edge a → b, the cells it passes through, from a's to b's.
   for (auto [a, b] : edges) {
     const Q D = X[b] - X[a];
@@ -92,6 +108,23 @@ void candidates(const Triangulation& tr, const std::vector<Q>& X, Best& best) {
       best.offer(z, dot(zs, zs));
       s = next;  // D·X[s] grows at each step: the walk ends
     }
+  }
+  // The Voronoi vertices: the circumcentres of the Delaunay triangles, those in the hull; in
+  // the order of an upper bound of their radius, only while it can reach the best so far.
+  std::vector<std::pair<double, std::array<Index, 3>>> order;
+  for (const auto& t : tr.finite_triangles()) {
+    const double U = radius2_bound(F[t[0]], F[t[1]], F[t[2]]);
+    if (!best.c || U >= best.r2.get_d()) order.emplace_back(U, t);  // get_d rounds towards 0
+  }
+  std::sort(order.begin(), order.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
+  for (const auto& [U, t] : order) {
+    if (best.c && U < best.r2.get_d()) break;  // U < r², and so for every later one
+    const Q& a = X[t[0]];
+    const Q b = X[t[1]] - a, c = X[t[2]] - a;
+    const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
+    const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // the centre minus a
+    const Q z{a.x + u.x, a.y + u.y};
+    if (in_hull(H, z)) best.offer(z, dot(u, u));
   }
 }
 // [largest-empty-circle]
@@ -126,7 +159,7 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
                                      "positive radius");
   Best best;
   if (tr.dimension() == 2) {
-    candidates(tr, X, best);
+    candidates(tr, F, X, best);
   } else {  // collinear: the midpoints of consecutive distinct sites along the line
     std::vector<Index> order;
     std::vector<char> dropped(n, 0);

@@ -38,9 +38,12 @@
 /// **The tie rule.** Among the centres of largest radius, the one with the smallest drawn
 /// position (X, Y) lexicographically (for back sites, of the mirrored problem).
 ///
-/// **Cost.** The planar Delaunay triangulation, O(n log n); then O(log h) exact orientations
-/// per triangle (binary search in the h hull corners), and along each hull edge a walk through
-/// the cells it crosses, each step a scan of a site's Delaunay neighbours.
+/// **Cost.** The planar Delaunay triangulation, O(n log n); along each hull edge a walk through
+/// the cells it crosses, each step a scan of a site's Delaunay neighbours; then the triangles
+/// in decreasing order of a double upper bound of their circumradius (proved in
+/// empty_circle.cpp; +∞ where it cannot be trusted), each evaluated exactly (rational centre,
+/// O(log h) exact orientations against the h hull corners) only while its bound reaches the
+/// best radius so far: O(n log n) in all, and in practice few exact evaluations.
 
 #include <cstdint>
 #include <span>
