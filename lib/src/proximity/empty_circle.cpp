@@ -24,17 +24,29 @@ Rational dot(const Q& a, const Q& b) { return a.x * b.x + a.y * b.y; }
 Rational cross(const Q& a, const Q& b) { return a.x * b.y - a.y * b.x; }
 int sgn(const Rational& v) { return sgn(v.get_num()); }
 
-/// The best candidate so far: the largest radius, then the smallest centre (tie rule).
+/// The exact drawn positions of the front points F, computed when asked for (most sites never
+/// are: a million rationals would cost more than the triangulation).
+struct Positions {
+  const std::vector<Point>& F;
+  Q operator[](Index k) const { return {Rational(F[k].x()) / F[k].w(), Rational(F[k].y()) / F[k].w()}; }
+  std::size_t size() const { return F.size(); }
+};
+
+/// The best candidate so far: the largest radius, then the smallest centre (tie rule); `site`
+/// a site on its circle, `other` a second one (none when not known).
 struct Best {
   std::optional<Q> c;
   Rational r2;
-  void offer(const Q& z, const Rational& r2z) {
+  Index site = Triangulation::none, other = Triangulation::none;
+  void offer(const Q& z, const Rational& r2z, Index s, Index t = Triangulation::none) {
     if (c) {
       const int s = cmp(r2z, r2);
       if (s < 0 || (s == 0 && std::pair(cmp(z.x, c->x), cmp(z.y, c->y)) >= std::pair(0, 0))) return;
     }
     c = z;
     r2 = r2z;
+    site = s;
+    other = t;
   }
 };
 
@@ -77,7 +89,7 @@ double radius2_bound(const Point& a, const Point& b, const Point& c) {
 
 // [largest-empty-circle]
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
-void candidates(const Triangulation& tr, const std::vector<Point>& F, const std::vector<Q>& X, Best& best) {
+void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X, Best& best) {
   const auto edges = tr.hull_edges();
   std::vector<Index> after(X.size(), Triangulation::none);  // the hull's next vertex, counter-clockwise
   for (auto [a, b] : edges) after[a] = b;
@@ -105,7 +117,7 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const std:
       }
       const Q z{X[a].x + lambda * D.x, X[a].y + lambda * D.y};
       const Q zs = z - X[s];
-      best.offer(z, dot(zs, zs));
+      best.offer(z, dot(zs, zs), s, next);
       s = next;  // D·X[s] grows at each step: the walk ends
     }
   }
@@ -124,7 +136,7 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const std:
     const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
     const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // the centre minus a
     const Q z{a.x + u.x, a.y + u.y};
-    if (in_hull(H, z)) best.offer(z, dot(u, u));
+    if (in_hull(H, z)) best.offer(z, dot(u, u), t[0]);
   }
 }
 // [largest-empty-circle]
@@ -149,10 +161,7 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
   std::vector<Point> F(P.begin(), P.end());
   if (mirrored)
     for (Point& p : F) p = antipode(p);
-  std::vector<Q> X(n);
-  for (Index k = 0; k < n; ++k) {
-    X[k] = {Rational(F[k].x()) / Rational(F[k].w()), Rational(F[k].y()) / Rational(F[k].w())};
-  }
+  const Positions X{F};
   const Triangulation tr = delaunay(F);
   if (tr.dimension() <= 0)
     throw UndefinedEmptyCircle(0, 0, "all sites equal: the hull is one site, and no empty circle centred there has a "
@@ -171,7 +180,7 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
       const Q& a = X[order[m - 1]];
       const Q& b = X[order[m]];
       const Q half{(b.x - a.x) / 2, (b.y - a.y) / 2};
-      best.offer({a.x + half.x, a.y + half.y}, dot(half, half));
+      best.offer({a.x + half.x, a.y + half.y}, dot(half, half), order[m - 1], order[m]);
     }
   }
   EmptyCircle c;
@@ -182,10 +191,25 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
   Integer x = z.x.get_num() * (w / z.x.get_den()), y = z.y.get_num() * (w / z.y.get_den());
   if (mirrored) w = -w, x = -x, y = -y;
   c.center = ExactPoint(w, x, y);
-  for (Index k = 0; k < n; ++k) {
-    const Q d = X[k] - z;
-    if (dot(d, d) == best.r2) c.on_circle.push_back(k);
+  // The sites on the circle: cocircular on an empty circle, so a Delaunay polygon (or edge)
+  // of the sites: connected by Delaunay edges from `site`; then the sites equal to them.
+  std::vector<char> on(n, 0);
+  std::vector<Index> todo{best.site};
+  on[best.site] = 1;
+  if (best.other != Triangulation::none) on[best.other] = 1, todo.push_back(best.other);
+  while (tr.dimension() == 2 && !todo.empty()) {
+    const Index s = todo.back();
+    todo.pop_back();
+    for (Index t : tr.neighbors(s)) {
+      if (t == Triangulation::infinite || on[t]) continue;
+      const Q d = X[t] - z;
+      if (dot(d, d) == best.r2) on[t] = 1, todo.push_back(t);
+    }
   }
+  for (auto [d, k] : tr.duplicates())
+    if (on[k]) on[d] = 1;
+  for (Index k = 0; k < n; ++k)
+    if (on[k]) c.on_circle.push_back(k);
   return c;
 }
 
