@@ -62,21 +62,22 @@ class Divide {
   /// The filter: |d| within the bound (always, out of the filter's range).
   bool near(double d) const { return all_ || std::abs(d) <= bound_; }
 
-  // [closest-pair-divide]
+  //> closest-pair-divide
   /// Solves s_[lo, hi) (sorted by x on entry, by ỹ on return).
   void solve(std::size_t lo, std::size_t hi) {
+    const auto by_y = [](const Site& a, const Site& b) { return a.y < b.y; };
     if (hi - lo <= 3) {
       for (std::size_t i = lo; i < hi; ++i)
         for (std::size_t j = i + 1; j < hi; ++j) consider(s_[i], s_[j]);
-      std::sort(s_.begin() + lo, s_.begin() + hi, [](const Site& a, const Site& b) { return a.y < b.y; });
+      std::sort(s_.begin() + lo, s_.begin() + hi, by_y);
       return;
     }
     const std::size_t mid = lo + (hi - lo) / 2;
     const double xm = s_[mid].x;  // the dividing line: x̃ of the first site on the right
     solve(lo, mid);
     solve(mid, hi);
-    std::merge(s_.begin() + lo, s_.begin() + mid, s_.begin() + mid, s_.begin() + hi, tmp_.begin() + lo,
-               [](const Site& a, const Site& b) { return a.y < b.y; });
+    const auto first = s_.begin() + lo, middle = s_.begin() + mid, last = s_.begin() + hi;
+    std::merge(first, middle, middle, last, tmp_.begin() + lo, by_y);
     std::copy(tmp_.begin() + lo, tmp_.begin() + hi, s_.begin() + lo);
     // The strip: the sites within the bound of the line, by ỹ; each against those above it
     // within the bound (at most 7 of them in exact terms, chapter 12).
@@ -84,9 +85,10 @@ class Divide {
     for (std::size_t i = lo; i < hi; ++i)
       if (near(s_[i].x - xm)) tmp_[k++] = s_[i];
     for (std::size_t i = lo; i < k; ++i)
-      for (std::size_t j = i + 1; j < k && near(tmp_[j].y - tmp_[i].y); ++j) consider(tmp_[i], tmp_[j]);
+      for (std::size_t j = i + 1; j < k && near(tmp_[j].y - tmp_[i].y); ++j)
+        consider(tmp_[i], tmp_[j]);
   }
-  // [closest-pair-divide]
+  //< closest-pair-divide
 
   std::span<const Point> P_;
   std::vector<Site> s_, tmp_;

@@ -87,11 +87,12 @@ double radius2_bound(const Point& a, const Point& b, const Point& c) {
   return N * (1 + 0x1p-40) / (4 * k * k) * (1 + 0x1p-40);
 }
 
-// [largest-empty-circle]
+//> largest-empty-circle
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
-void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X, Best& best) {
+void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X,
+                Best& best) {
   const auto edges = tr.hull_edges();
-  std::vector<Index> after(X.size(), Triangulation::none);  // the hull's next vertex, counter-clockwise
+  std::vector<Index> after(X.size(), Triangulation::none);  // the next hull vertex
   for (auto [a, b] : edges) after[a] = b;
   std::vector<Q> H;  // the hull's corners in order (sites inside a hull edge dropped)
   Index p = edges.front().first;
@@ -100,7 +101,7 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
     if (sgn(cross(X[a] - X[p], X[b] - X[a])) != 0) H.push_back(X[a]);
     p = a;
   } while (p != edges.front().first);
-  // The crossings: along each hull edge a → b, the cells it passes through, from a's to b's.
+  // The crossings: along each hull edge a → b, the cells it passes through.
   for (auto [a, b] : edges) {
     const Q D = X[b] - X[a];
     Index s = a;
@@ -121,25 +122,26 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
       s = next;  // D·X[s] grows at each step: the walk ends
     }
   }
-  // The Voronoi vertices: the circumcentres of the Delaunay triangles, those in the hull; in
-  // the order of an upper bound of their radius, only while it can reach the best so far.
+  // The Voronoi vertices: the circumcentres of the Delaunay triangles, those in the hull;
+  // by an upper bound of their radius, only while it can reach the best so far.
   std::vector<std::pair<double, std::array<Index, 3>>> order;
   for (const auto& t : tr.finite_triangles()) {
     const double U = radius2_bound(F[t[0]], F[t[1]], F[t[2]]);
-    if (!best.c || U >= best.r2.get_d()) order.emplace_back(U, t);  // get_d rounds towards 0
+    if (!best.c || U >= best.r2.get_d()) order.emplace_back(U, t);  // get_d rounds to 0
   }
-  std::sort(order.begin(), order.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
+  std::sort(order.begin(), order.end(),
+            [](const auto& l, const auto& r) { return l.first > r.first; });
   for (const auto& [U, t] : order) {
     if (best.c && U < best.r2.get_d()) break;  // U < r², and so for every later one
     const Q& a = X[t[0]];
     const Q b = X[t[1]] - a, c = X[t[2]] - a;
     const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
-    const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // the centre minus a
+    const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // centre − a
     const Q z{a.x + u.x, a.y + u.y};
     if (in_hull(H, z)) best.offer(z, dot(u, u), t[0]);
   }
 }
-// [largest-empty-circle]
+//< largest-empty-circle
 
 }  // namespace
 
