@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/triangulation/delaunay.hpp"
@@ -28,7 +29,10 @@ int sgn(const Rational& v) { return sgn(v.get_num()); }
 /// are: a million rationals would cost more than the triangulation).
 struct Positions {
   const std::vector<Point>& F;
-  Q operator[](Index k) const { return {Rational(F[k].x()) / F[k].w(), Rational(F[k].y()) / F[k].w()}; }
+  Q operator[](Index k) const {
+    const Rational w(F[k].w());
+    return {Rational(F[k].x()) / w, Rational(F[k].y()) / w};
+  }
   std::size_t size() const { return F.size(); }
 };
 
@@ -116,6 +120,7 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
         const Rational l = (dot(ta, ta) - dot(sa, sa)) / den;
         if (next == Triangulation::none || l < lambda) next = t, lambda = l;
       }
+      if (next == Triangulation::none) throw std::logic_error("lec: no exit");
       const Q z{X[a].x + lambda * D.x, X[a].y + lambda * D.y};
       const Q zs = z - X[s];
       best.offer(z, dot(zs, zs), s, next);
