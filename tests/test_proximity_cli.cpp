@@ -1,5 +1,5 @@
 // t2 emst, t2 ann and t2 closest-pair from the command line: the documented 'i j' lines equal
-// the library's answer on random input of both sides, both closest-pair algorithms agree, the
+// the library's answer on random input of both sides, the three closest-pair algorithms agree, the
 // exit statuses of bad and undefined input (file:line), and the answer scene.
 #include <fmt/format.h>
 
@@ -49,11 +49,15 @@ TEST_F(ProximityCli, PrintsTheLibrarysAnswer) {
   ASSERT_EQ(d.status, 0) << d.err;
   EXPECT_EQ(b.out, d.out);
   EXPECT_EQ(d.out, lines({closest_pair_brute(P)}));
+  const Result v = t2("closest-pair p.t2 --algorithm divide");
+  ASSERT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(v.out, d.out);
 }
 
 TEST_F(ProximityCli, SmallCasesByHand) {
   write("sq.t2", "0 0\n2 0\n0 1\n2 1\n");  // a 2 x 1 rectangle: the short sides
   EXPECT_EQ(t2("closest-pair sq.t2").out, "0 2\n");
+  EXPECT_EQ(t2("closest-pair sq.t2 --algorithm divide").out, "0 2\n");
   EXPECT_EQ(t2("emst sq.t2").out, "0 2\n1 3\n0 1\n");
   EXPECT_EQ(t2("ann sq.t2").out, "0 2\n1 3\n2 0\n3 1\n");
   write("eq.t2", "1 1\n5 5\n2 2 2\n");  // p2 equals p0

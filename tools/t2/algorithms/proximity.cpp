@@ -1,6 +1,6 @@
 // The proximity problems of T² (chapter 12, t2/proximity/), timed by `t2 bench` on points of
 // the plane; Welzl's smallest enclosing circle is animated too (Kruskal's animation is issue
-// 25's later part). Each but `sec` builds the Delaunay triangulation of each side in its run,
+// 25's later part). Each but `sec` and `closest-pair-divide` builds the Delaunay triangulation of each side in its run,
 // so `t2 bench emst delaunay` compares the whole cost with the triangulation's.
 #include <fmt/format.h>
 
@@ -13,6 +13,7 @@
 #include "t2/trace/overlay.hpp"
 #include "t2/trace/recording.hpp"
 #include "t2/proximity/closest_pair.hpp"
+#include "t2/proximity/empty_circle.hpp"
 #include "t2/proximity/enclosing_circle.hpp"
 #include "t2/proximity/nearest_neighbors.hpp"
 #include "t2/proximity/spanning_tree.hpp"
@@ -24,6 +25,7 @@ T2_PROBLEM({"emst", "edges", Input::plane});
 T2_PROBLEM({"ann", "sites", Input::plane});
 T2_PROBLEM({"closest-pair", "pairs", Input::plane});
 T2_PROBLEM({"sec", "support sites", Input::plane});
+T2_PROBLEM({"lec", "sites on the circle", Input::plane});
 
 T2_ALGORITHM({.name = "emst",  // what `t2 emst` runs
               .problem = "emst",
@@ -48,6 +50,17 @@ T2_ALGORITHM({.name = "closest-pair",  // what `t2 closest-pair` runs (--algorit
               .time = [](BenchInput& in) -> Timed {
                 return [&P = in.points] {
                   t2::closest_pair(std::span<const t2::Point>(P));
+                  return std::size_t(1);
+                };
+              }});
+
+T2_ALGORITHM({.name = "closest-pair-divide",  // t2 closest-pair --algorithm divide
+              .problem = "closest-pair",
+              .summary = "t2::closest_pair_divide: Shamos-Hoey divide and conquer on each side of T2",
+              .title = "the closest pair in T2 (divide and conquer)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  t2::closest_pair_divide(std::span<const t2::Point>(P));
                   return std::size_t(1);
                 };
               }});
@@ -140,6 +153,16 @@ T2_ALGORITHM({.name = "sec",  // what `t2 sec` runs
                 };
               },
               .peers = {"cgal"}});
+
+T2_ALGORITHM({.name = "lec",  // what `t2 lec` runs
+              .problem = "lec",
+              .summary = "t2::largest_empty_circle: Voronoi vertices in the hull and Voronoi edges across it (Algorithm 13)",
+              .title = "the largest empty circle with its centre in the hull",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  return t2::largest_empty_circle(std::span<const t2::Point>(P)).on_circle.size();
+                };
+              }});
 
 }  // namespace
 }  // namespace t2cli::algorithms
