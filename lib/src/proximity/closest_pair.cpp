@@ -7,6 +7,7 @@
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/pair_distance.hpp"
 #include "t2/proximity/sites.hpp"
+#include "pair_rules.hpp"
 
 namespace t2 {
 
@@ -26,9 +27,7 @@ Pair closest_pair_brute(std::span<const Point> P) {
 Pair closest_pair(std::span<const Point> P) {
   if (P.size() < 2) throw BadInput("closest_pair: needs at least two sites");
   const ProximitySites s = proximity_sites(P);
-  Pair best{Triangulation::none, Triangulation::none};
-  for (Index i = 0; i < P.size(); ++i)  // equal sites: the smallest pair (first, another)
-    if (s.kept[i] != i) best = std::min(best, Pair{s.kept[i], i});
+  Pair best = detail::equal_sites_pair(s.kept);
   if (best.first != Triangulation::none) return best;
   // Finite: the Delaunay edges of each side; by their keys first (one pass over the points),
   // where every edge has one; only the keys near the least can be the nearest.
@@ -48,8 +47,7 @@ Pair closest_pair(std::span<const Point> P) {
       if (best.first == Triangulation::none || pair_before(P, e.first, e.second, best.first, best.second)) best = e;
   }
   if (best.first != Triangulation::none) return best;
-  if (!s.omega.empty()) return {0, P[0].w() == 0 ? 1 : s.omega.front()};  // +∞, all level
-  return {0, 1};  // one front site and one back site
+  return detail::pair_without_finite_distance(P, s.omega.empty() ? Triangulation::none : s.omega.front());
 }
 //< closest-pair
 

@@ -23,6 +23,7 @@
 #include "t2/kernel/pair_distance.hpp"
 #include "t2/proximity/closest_pair.hpp"
 #include "t2/triangulation/delaunay_t2.hpp"
+#include "pair_rules.hpp"
 
 namespace t2 {
 namespace {
@@ -143,16 +144,13 @@ Pair closest_pair_divide(std::span<const Point> P) {
     detail::omega_order(P, omega, merged);
     for (auto [d, k] : merged.duplicates()) kept[d] = k;
   }
-  Pair best{none, none};
-  for (Index i = 0; i < n; ++i)  // equal sites: the smallest pair (first, another)
-    if (kept[i] != i) best = std::min(best, Pair{kept[i], i});
+  Pair best = detail::equal_sites_pair(kept);
   if (best.first != none) return best;
   best = pf;
   if (pb.first != none && (best.first == none || pair_before(P, pb.first, pb.second, best.first, best.second)))
     best = pb;
   if (best.first != none) return best;
-  if (!omega.empty()) return {0, P[0].w() == 0 ? 1 : omega.front()};  // +∞, all level
-  return {0, 1};  // one front site and one back site
+  return detail::pair_without_finite_distance(P, omega.empty() ? none : omega.front());
 }
 
 }  // namespace t2
