@@ -12,6 +12,7 @@
 #include "fortune_interval.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/incircle.hpp"
+#include "t2/kernel/number.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/sign_sqrt.hpp"
 
@@ -22,8 +23,6 @@ namespace {
 using Index = FortuneDiagram::Index;
 using detail::Arc;
 using detail::Interval;
-
-Sign sign_of(const Rational& q) { return static_cast<Sign>(sgn(q)); }
 
 //> fortune-root-sign
 /// sign(a + b√c) for rationals, c ≥ 0: times the positive a.den · b.den · c.den it is
