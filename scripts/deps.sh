@@ -6,7 +6,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev
   doxygen pandoc libjs-katex librsvg2-bin fonts-dejavu-core
   clang libclang-rt-14-dev bubblewrap zip unzip
-  libcgal-dev libboost-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libqhull-dev
+  libcgal-dev libboost-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libqhull-dev libnanoflann-dev
   chromium
 )
 missing=()
