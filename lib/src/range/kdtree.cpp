@@ -1,0 +1,127 @@
+// The kd-tree of points of T² (range/kdtree.hpp).
+#include "t2/range/kdtree.hpp"
+
+#include <algorithm>
+
+#include "window.hpp"
+
+namespace t2 {
+namespace {
+
+using range::Window;
+
+// Arranges p[lo, hi) as the subtree of a node of depth `depth` (kdtree.hpp).
+void build(std::vector<DrawnPoint>& p, std::size_t lo, std::size_t hi, int depth) {
+  //> kdtree-build
+  if (hi - lo <= KdTree::kLeaf) return;  // a leaf: scanned by queries
+  const int axis = depth % 2;
+  const std::size_t mid = lo + (hi - lo) / 2;
+  std::nth_element(p.begin() + lo, p.begin() + mid, p.begin() + hi,
+                   [axis](const DrawnPoint& a, const DrawnPoint& b) { return range::composite_less(a, b, axis); });
+  build(p, lo, mid, depth + 1);  // before the median in the composite order
+  build(p, mid + 1, hi, depth + 1);  // after it
+  //< kdtree-build
+}
+
+// The flags of the walk: bit 2a + 0 when the region's lower end on axis a is known to be at or
+// above the window's, bit 2a + 1 for its upper end at or below the window's.
+constexpr unsigned kInside = 0b1111;
+
+template <class Visit>
+struct Walker {
+  const std::vector<DrawnPoint>& p;
+  const Window& w;
+  Visit& v;
+
+  //> kdtree-query
+  void walk(std::size_t lo, std::size_t hi, int depth, unsigned known) {
+    v.enter();
+    if (known == kInside) return v.all(p.data() + lo, p.data() + hi);  // the region is inside
+    if (hi - lo <= KdTree::kLeaf) {
+      for (std::size_t k = lo; k < hi; ++k)
+        if (w.contains(p[k])) v.one(p[k]);
+      return;
+    }
+    const int a = depth % 2;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const DrawnPoint& s = p[mid];
+    const double c = a ? s.y : s.x;
+    const bool left = w.lo[a].at_most(c, s.w);   // lo ≤ s: the part before s may meet the window
+    const bool right = w.hi[a].at_least(c, s.w);  // s ≤ hi: the part after s may
+    if (left && right && w.contains(s)) v.one(s);
+    // The part before s ends at s: inside on that end when s ≤ hi; the part after starts at s.
+    if (left) walk(lo, mid, depth + 1, right ? known | 2u << (2 * a) : known);
+    if (right) walk(mid + 1, hi, depth + 1, left ? known | 1u << (2 * a) : known);
+  }
+  //< kdtree-query
+};
+
+// The flags at the root: an infinite end of the window holds the whole tree on that end.
+unsigned root_flags(const Window& w) {
+  unsigned known = 0;
+  for (int a = 0; a < 2; ++a) {
+    if (w.lo[a].minus_infinity()) known |= 1u << (2 * a);
+    if (w.hi[a].plus_infinity()) known |= 2u << (2 * a);
+  }
+  return known;
+}
+
+struct Counter {
+  std::size_t n = 0, nodes = 0;
+  void enter() { ++nodes; }
+  void all(const DrawnPoint* b, const DrawnPoint* e) { n += static_cast<std::size_t>(e - b); }
+  void one(const DrawnPoint&) { ++n; }
+};
+
+struct Reporter {
+  std::vector<std::size_t>& out;
+  void enter() {}
+  void all(const DrawnPoint* b, const DrawnPoint* e) {
+    for (; b != e; ++b) out.push_back(b->index);
+  }
+  void one(const DrawnPoint& q) { out.push_back(q.index); }
+};
+
+}  // namespace
+
+KdTree::KdTree(std::span<const Point> points) {
+  Sides s = split_sides(points);
+  for (int k = 0; k < 2; ++k) {
+    side_[k] = std::move(s.side[k]);
+    build(side_[k], 0, side_[k].size(), 0);
+  }
+  omega_ = std::move(s.omega);
+}
+
+template <class Visit>
+void KdTree::walk(const ExactBBox& b, Visit& v) const {
+  const Window w(b);
+  const std::vector<DrawnPoint>& p = side_[w.side];
+  if (p.empty()) return;
+  Walker<Visit>{p, w, v}.walk(0, p.size(), 0, root_flags(w));
+}
+
+std::size_t KdTree::count(const ExactIsoRect& r) const {
+  const ExactBBox b = bbox(r);
+  Counter c;
+  walk(b, c);
+  return c.n + omega_.count(b);
+}
+
+std::vector<std::size_t> KdTree::report(const ExactIsoRect& r) const {
+  const ExactBBox b = bbox(r);
+  std::vector<std::size_t> out;
+  Reporter rep{out};
+  walk(b, rep);
+  omega_.report(b, out);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::size_t KdTree::visits(const ExactIsoRect& r) const {
+  Counter c;
+  walk(bbox(r), c);
+  return c.nodes;
+}
+
+}  // namespace t2
