@@ -15,7 +15,8 @@
 // PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
 // delaunay, triangulation, hull3d, ...) and an implementation of it: a t2 algorithm registered
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
-// cgal (hull, delaunay, hull3d, intersect, locate, sec), qhull (hull, hull3d), raw and exact
+// cgal (hull, delaunay, hull3d, intersect, locate, sec), qhull (hull, hull3d), nanoflann and
+// rtree (range: range_peers.hpp), raw and exact
 // (hull, delaunay: t2's own code on plain double predicates, inexact, or on exact arithmetic at
 // every call, no filter).
 // A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
@@ -58,6 +59,7 @@ extern "C" {
 #include "algorithms/answer.hpp"
 #include "algorithms/location.hpp"
 #include "algorithms/registry.hpp"
+#include "range_peers.hpp"
 #include "raw_kernel.hpp"
 
 namespace {
@@ -301,6 +303,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "intersect" ? intersect_peer(impl, in.segments)
           : problem == "locate"   ? locate_peer(impl, in.points)
           : problem == "sec"      ? sec_peer(impl, in.points)
+          : problem == "range"    ? t2bench::range_peer(impl, in.points)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;

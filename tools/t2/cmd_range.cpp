@@ -1,5 +1,6 @@
 // t2 range: the points of a scene in closed iso-rectangles of T², counted by the locus method
-// (t2/range/locus.hpp) or by testing every point (`contains`, bbox.hpp).
+// (t2/range/locus.hpp), found by a kd-tree (kdtree.hpp) or a range tree (range_tree.hpp), or
+// by testing every point (`contains`, bbox.hpp).
 #include <fmt/format.h>
 
 #include <charconv>
@@ -14,7 +15,9 @@
 #include "t2/kernel/bbox.hpp"
 #include "t2/kernel/io.hpp"
 #include "t2/kernel/scene.hpp"
+#include "t2/range/kdtree.hpp"
 #include "t2/range/locus.hpp"
+#include "t2/range/range_tree.hpp"
 
 namespace t2cli {
 namespace {
@@ -27,11 +30,12 @@ struct Options {
 
 // The rectangles of RECTS, one a line: "x0 y0 x1 y1" (opposite front corners) or
 // "w0 x0 y0 w1 x1 y1" (opposite corners as points of T², iso_rect(a, c)). Blank lines and
-// lines starting with '#' are skipped.
-std::vector<t2::IsoRect> read_rects(const std::string& file) {
+// lines starting with '#' are skipped. The corners are converted exactly before the rectangle is
+// made, so its far sides are the numbers written, not differences rounded in doubles.
+std::vector<t2::ExactIsoRect> read_rects(const std::string& file) {
   const std::string name = file == "-" ? "<stdin>" : file;
   const std::string text = t2::read_file(file == "-" ? "/dev/stdin" : file);
-  std::vector<t2::IsoRect> out;
+  std::vector<t2::ExactIsoRect> out;
   int line = 0;
   for (std::size_t at = 0; at < text.size();) {
     const std::size_t end = std::min(text.find('\n', at), text.size());
@@ -57,7 +61,7 @@ std::vector<t2::IsoRect> read_rects(const std::string& file) {
     const t2::Point a = v.size() == 4 ? t2::Point::cartesian(v[0], v[1]) : t2::Point(v[0], v[1], v[2]);
     const t2::Point c = v.size() == 4 ? t2::Point::cartesian(v[2], v[3]) : t2::Point(v[3], v[4], v[5]);
     try {
-      out.push_back(t2::iso_rect(a, c));
+      out.push_back(t2::iso_rect(t2::to_exact(a), t2::to_exact(c)));
     } catch (const t2::Undefined& e) {
       throw t2::Undefined(fmt::format("{}:{}: {}", name, line, e.what()));
     }
@@ -70,17 +74,24 @@ int range(const Options& o) {
     throw UsageError("--algorithm locus counts: it needs --count (it cannot list the points)");
   const t2::Scene scene = read_scene_argument(o.points);
   const std::vector<t2::Point> P = scene_points(scene);
-  const std::vector<t2::IsoRect> R = read_rects(o.rects);
+  const std::vector<t2::ExactIsoRect> R = read_rects(o.rects);
   std::string out;
+  auto answer = [&](const auto& S) {
+    for (const auto& r : R)
+      out += o.count ? fmt::format("{}\n", S.count(r)) : fmt::format("{}\n", fmt::join(S.report(r), " "));
+  };
   if (o.algorithm == "locus") {
     const t2::LocusCounter L(P);
     for (const auto& r : R) out += fmt::format("{}\n", L.count(r));
+  } else if (o.algorithm == "kdtree") {
+    answer(t2::KdTree(P));
+  } else if (o.algorithm == "rangetree") {
+    answer(t2::RangeTree(P));
   } else {
     std::vector<t2::ExactPoint> E;
     for (const auto& p : P) E.push_back(t2::to_exact(p));
     for (const auto& r : R) {
-      const t2::ExactBBox b = t2::bbox(
-          t2::ExactIsoRect(t2::to_exact(r.a()), t2::to_exact(r.dx()), t2::to_exact(r.dy())));
+      const t2::ExactBBox b = t2::bbox(r);
       std::vector<std::size_t> in;
       for (std::size_t i = 0; i < E.size(); ++i)
         if (t2::contains(b, E[i])) in.push_back(i);
@@ -104,10 +115,12 @@ Action setup(Arguments& app) {
   app.add_option("POINTS", o->points, "the scene file of points, - for standard input")->required();
   app.add_option("RECTS", o->rects, "the rectangles, one a line")->required();
   app.add_option("--algorithm", o->algorithm,
-                 "brute (default: every point tested) or locus (seed 000's Algorithms 17-18:\n"
-                 "O(n^2) preprocessing, O(log n) a query; counts only)")
+                 "brute (default: every point tested), locus (seed 000's Algorithms 17-18:\n"
+                 "O(n^2) preprocessing, O(log n) a query; counts only), kdtree (O(n log n)\n"
+                 "preprocessing, O(sqrt n + k) a query) or rangetree (fractional cascading:\n"
+                 "O(n log n) time and memory, O(log n + k) a query)")
       ->type_name("A")
-      ->check(IsMember({"brute", "locus"}));
+      ->check(IsMember({"brute", "locus", "kdtree", "rangetree"}));
   app.add_flag("--count", o->count, "print the number of points, not their indices");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 a\n"

@@ -21,12 +21,29 @@ double floor_double(const Rational& q) {
   return d;
 }
 
+// The value X / W as a double when it is one: W = 2^e and X of at most 53 significant bits, as
+// every bound of a rectangle with double corners is (to_exact scales by powers of two). Spares
+// the rationals of floor_double, which a query of a few microseconds would feel.
+bool dyadic(const Integer& X, const Integer& W, double& out) {
+  const mp_bitcnt_t e = mpz_scan1(W.get_mpz_t(), 0);
+  if (mpz_sizeinbase(W.get_mpz_t(), 2) != e + 1) return false;  // W is no power of two
+  if (sgn(X) == 0) return out = 0, true;
+  if (mpz_sizeinbase(X.get_mpz_t(), 2) - mpz_scan1(X.get_mpz_t(), 0) > 53 || e > 1000) return false;
+  const double x = mpz_get_d(X.get_mpz_t());  // exact: 53 significant bits at most
+  out = std::ldexp(x, -static_cast<int>(e));
+  return std::ldexp(out, static_cast<int>(e)) == x;  // no underflow
+}
+
 }  // namespace
 
 Bound::Bound(const ExactT1& v) : v_(v) {
   const double inf = std::numeric_limits<double>::infinity();
   if (v.w() == 0) {
     floor_ = ceil_ = v.x() > 0 ? inf : -inf;
+    return;
+  }
+  if (dyadic(v.x(), v.w(), floor_)) {
+    ceil_ = floor_;
     return;
   }
   Rational q(v.x(), v.w());

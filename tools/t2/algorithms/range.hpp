@@ -1,0 +1,18 @@
+#pragma once
+// The input of `t2 bench range` beyond the points (range.cpp): the query windows, the same for
+// t2's structures and for the peers.
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "t2/kernel/point.hpp"
+
+namespace t2cli::algorithms {
+
+/// One window per ten points (at least one): closed boxes {x0, y0, x1, y1} of doubles, centred
+/// uniformly in the points' bounding box (a fixed seed), each 1/√(n/10) of its width and
+/// height, so that a window of uniform points holds about ten. The points have w = 1.
+std::vector<std::array<double, 4>> range_windows(std::span<const t2::Point> points);
+
+}  // namespace t2cli::algorithms
