@@ -1,12 +1,15 @@
 // Chapter 15: range search. Counting the points in iso-rectangles of T² by the locus method
-// (seed 000, Algorithms 17-18), checked against testing every point; the figures in both models
-// (figures.cpp).
+// (seed 000, Algorithms 17-18), reporting them with a kd-tree and a range tree, all checked
+// against testing every point; the figures in both models (figures.cpp).
 #include <t2/draw.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/kernel/bbox.hpp>
+#include <t2/range/kdtree.hpp>
 #include <t2/range/locus.hpp>
+#include <t2/range/range_tree.hpp>
 #include <t2/t2.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -77,11 +80,58 @@ void queries() {
   std::cout << "\n";
 }
 
+// The indices of the points in r, by testing every point.
+std::vector<std::size_t> inside(const std::vector<Point>& P, const t2::ExactIsoRect& r) {
+  std::vector<std::size_t> in;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (t2::contains(r, t2::to_exact(P[i]))) in.push_back(i);
+  return in;
+}
+
+void trees() {
+  std::cout << "== the kd-tree and the range tree\n";
+  //> kdtree-demo
+  // A thin window, the segment x = 1/2, 0 <= y <= 1, over n uniform points of the unit
+  // square: the nodes of the kd-tree it enters grow like the square root of n.
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> u(0, 1);
+  const t2::ExactIsoRect line(t2::to_exact(Point::cartesian(0.5, 0)), t2::ExactT1(1, 0),
+                              t2::ExactT1(1, 1));
+  std::vector<Point> P;
+  for (std::size_t n = 1024; n <= 262144; n *= 4) {
+    while (P.size() < n) P.push_back(Point::cartesian(u(rng), u(rng)));
+    const t2::KdTree T(P);
+    std::cout << "n = " << n << ": " << T.visits(line) << " nodes entered, sqrt(n) = "
+              << std::sqrt(double(n)) << "\n";
+  }
+  //< kdtree-demo
+  t2::gen::Options o;
+  o.n = 400;
+  o.seed = 15;
+  const auto R = t2::gen::points(t2::gen::Kind::both_sides, o);
+  const t2::KdTree K(R);
+  const t2::RangeTree G(R);
+  std::uniform_real_distribution<double> c(-1, 1);
+  int agree = 0;
+  for (int q = 0; q < 1000; ++q) {
+    const t2::ExactIsoRect r(t2::to_exact(Point(q % 2 ? 1 : -1, c(rng), c(rng))),
+                             t2::to_exact(T1(1, c(rng))), t2::to_exact(T1(q % 7 ? 1 : 0, c(rng))));
+    const auto want = inside(R, r);
+    agree += K.report(r) == want && G.report(r) == want;
+  }
+  std::cout << "1000 random rectangles over 400 points on both sides: kd-tree and range tree "
+               "report what contains says on "
+            << agree << ", the range tree with " << G.entries() << " list entries\n";
+  require(agree == 1000, "the trees' reports");
+  std::cout << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = t2::draw::figures_dir(argc, argv, T2_FIGURES_DIR);
   grid();
   queries();
+  trees();
   chapter15::figures(dir);
 }

@@ -16,8 +16,10 @@ void build(std::vector<DrawnPoint>& p, std::size_t lo, std::size_t hi, int depth
   if (hi - lo <= KdTree::kLeaf) return;  // a leaf: scanned by queries
   const int axis = depth % 2;
   const std::size_t mid = lo + (hi - lo) / 2;
-  std::nth_element(p.begin() + lo, p.begin() + mid, p.begin() + hi,
-                   [axis](const DrawnPoint& a, const DrawnPoint& b) { return range::composite_less(a, b, axis); });
+  const auto less = [axis](const DrawnPoint& a, const DrawnPoint& b) {
+    return range::composite_less(a, b, axis);
+  };
+  std::nth_element(p.begin() + lo, p.begin() + mid, p.begin() + hi, less);
   build(p, lo, mid, depth + 1);  // before the median in the composite order
   build(p, mid + 1, hi, depth + 1);  // after it
   //< kdtree-build
@@ -36,7 +38,7 @@ struct Walker {
   //> kdtree-query
   void walk(std::size_t lo, std::size_t hi, int depth, unsigned known) {
     v.enter();
-    if (known == kInside) return v.all(p.data() + lo, p.data() + hi);  // the region is inside
+    if (known == kInside) return v.all(p.data() + lo, p.data() + hi);  // inside: all
     if (hi - lo <= KdTree::kLeaf) {
       for (std::size_t k = lo; k < hi; ++k)
         if (w.contains(p[k])) v.one(p[k]);
@@ -46,10 +48,10 @@ struct Walker {
     const std::size_t mid = lo + (hi - lo) / 2;
     const DrawnPoint& s = p[mid];
     const double c = a ? s.y : s.x;
-    const bool left = w.lo[a].at_most(c, s.w);   // lo ≤ s: the part before s may meet the window
-    const bool right = w.hi[a].at_least(c, s.w);  // s ≤ hi: the part after s may
+    const bool left = w.lo[a].at_most(c, s.w);   // lo ≤ s: the points before s may be in
+    const bool right = w.hi[a].at_least(c, s.w);  // s ≤ hi: the points after s may be in
     if (left && right && w.contains(s)) v.one(s);
-    // The part before s ends at s: inside on that end when s ≤ hi; the part after starts at s.
+    // The region before s ends at s: inside there when s ≤ hi. The one after starts at s.
     if (left) walk(lo, mid, depth + 1, right ? known | 2u << (2 * a) : known);
     if (right) walk(mid + 1, hi, depth + 1, left ? known | 1u << (2 * a) : known);
   }

@@ -24,9 +24,10 @@ struct Builder {
   }
 
   //> rangetree-build
-  // The node of depth d owning [lo, hi): its y-sorted list and bridges, from its children's.
+  // The node of depth d owning [lo, hi): its y-sorted list and bridges, from its children.
   void build(std::size_t d, std::uint32_t lo, std::uint32_t hi) {
-    if (level.size() <= d) level.emplace_back(byx.size()), bridge.emplace_back(byx.size());
+    if (level.size() <= d)  // the first node of depth d
+      level.emplace_back(byx.size()), bridge.emplace_back(byx.size());
     if (hi - lo == 1) {
       level[d][lo] = lo, bridge[d][lo] = 0;
       return;
@@ -35,7 +36,7 @@ struct Builder {
     build(d + 1, lo, mid);
     build(d + 1, mid, hi);
     std::vector<std::uint32_t>& L = level[d];
-    const std::vector<std::uint32_t>& C = level[d + 1];  // the children's lists, side by side
+    const std::vector<std::uint32_t>& C = level[d + 1];  // the children's lists
     std::uint32_t i = lo, j = mid, from_left = 0;
     for (std::uint32_t t = lo; t < hi; ++t) {
       bridge[d][t] = from_left;  // left-child elements before position t
@@ -56,13 +57,16 @@ struct Walker {
   Visit& v;
 
   //> rangetree-query
-  // The node of depth d owning [lo, hi), whose list holds the y-interval at [lo + j0, lo + j1).
+  // The node of depth d owning [lo, hi): its list has the y-interval at [lo + j0, lo + j1).
   void walk(std::size_t d, std::size_t lo, std::size_t hi, std::size_t j0, std::size_t j1) {
     if (j0 == j1 || hi <= i0 || i1 <= lo) return;  // nothing in y, or nothing in x
-    if (i0 <= lo && hi <= i1) return v.all(level[d].data() + lo + j0, level[d].data() + lo + j1);
+    const std::uint32_t* list = level[d].data() + lo;
+    if (i0 <= lo && hi <= i1) return v.all(list + j0, list + j1);  // canonical: all
     const std::size_t mid = lo + (hi - lo) / 2;
     // The bridge of a prefix of length t: how many of its elements are in the left child.
-    auto left = [&](std::size_t t) -> std::size_t { return t == hi - lo ? mid - lo : bridge[d][lo + t]; };
+    auto left = [&](std::size_t t) -> std::size_t {
+      return t == hi - lo ? mid - lo : bridge[d][lo + t];
+    };
     walk(d + 1, lo, mid, left(j0), left(j1));
     walk(d + 1, mid, hi, j0 - left(j0), j1 - left(j1));
   }
