@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "t2/kernel/bbox.hpp"
+#include "range_testing.hpp"
 #include "t2/range/locus.hpp"
 
 namespace {
@@ -15,44 +16,12 @@ using t2::ExactT1;
 using t2::Integer;
 using t2::Point;
 
-std::size_t brute(const std::vector<Point>& P, const ExactIsoRect& r) {
-  std::size_t n = 0;
-  for (const Point& p : P) n += t2::contains(r, t2::to_exact(p));
-  return n;
-}
-
-// Points on a small grid (so that x and y repeat and fall on rectangle sides), with weights 1,
-// 2 and -1, -3 (the same drawn positions on the front and on the back), duplicates, and points
-// of Ω in all eight directions.
-std::vector<Point> points(std::mt19937_64& rng, int n) {
-  std::uniform_int_distribution<int> c(-4, 4), kind(0, 9), w(1, 3);
-  std::vector<Point> P;
-  for (int k = 0; k < n; ++k) {
-    const int x = c(rng), y = c(rng), t = kind(rng);
-    if (t == 0) {
-      if (x != 0 || y != 0) P.emplace_back(0, x, y);
-    } else {
-      const double s = t <= 5 ? w(rng) : -w(rng);
-      P.emplace_back(s, s * x / 2, s * y / 2);  // halves: exact in doubles
-    }
-  }
-  if (!P.empty()) P.push_back(P[P.size() / 2]);  // a duplicate
-  return P;
-}
-
-// A rectangle on either side: corner on the grid, extents finite (zero included), +∞ or −∞.
-ExactIsoRect rect(std::mt19937_64& rng) {
-  std::uniform_int_distribution<int> c(-5, 5), e(-6, 6), side(0, 1);
-  const Integer s = side(rng) ? 2 : -2;
-  const t2::ExactPoint a(s, s * c(rng), s * c(rng));
-  auto extent = [&] {
-    const int v = e(rng);
-    if (v == 6) return ExactT1(0, 1);
-    if (v == -6) return ExactT1(0, -1);
-    return ExactT1(2, v);
-  };
-  return ExactIsoRect(a, extent(), extent());
-}
+// The count by definition, on the inputs of the range-search tests (range_testing.hpp): points
+// on a grid with weights ±1, ±2, ±3, duplicates and points of Ω in all eight directions, and
+// rectangles on either side, finite or reaching Ω.
+std::size_t brute(const std::vector<Point>& P, const ExactIsoRect& r) { return range_testing::brute(P, r).size(); }
+using range_testing::rect;
+std::vector<Point> points(std::mt19937_64& rng, int n) { return range_testing::mixed_points(rng, n); }
 
 TEST(Locus, CountsWhatContainsSeesOnBothSidesAndOnOmega) {
   std::mt19937_64 rng(13);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "answer.hpp"
 #include "window.hpp"
 
 namespace t2 {
@@ -104,20 +105,18 @@ void KdTree::walk(const ExactBBox& b, Visit& v) const {
 }
 
 std::size_t KdTree::count(const ExactIsoRect& r) const {
-  const ExactBBox b = bbox(r);
-  Counter c;
-  walk(b, c);
-  return c.n + omega_.count(b);
+  return range::count_in(r, omega_, [this](const ExactBBox& b) {
+    Counter c;
+    walk(b, c);
+    return c.n;
+  });
 }
 
 std::vector<std::size_t> KdTree::report(const ExactIsoRect& r) const {
-  const ExactBBox b = bbox(r);
-  std::vector<std::size_t> out;
-  Reporter rep{out};
-  walk(b, rep);
-  omega_.report(b, out);
-  std::sort(out.begin(), out.end());
-  return out;
+  return range::report_in(r, omega_, [this](const ExactBBox& b, std::vector<std::size_t>& out) {
+    Reporter rep{out};
+    walk(b, rep);
+  });
 }
 
 std::size_t KdTree::visits(const ExactIsoRect& r) const {

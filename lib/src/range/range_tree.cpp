@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "answer.hpp"
 #include "window.hpp"
 
 namespace t2 {
@@ -121,21 +122,18 @@ void RangeTree::walk(const ExactBBox& b, Visit& v) const {
 }
 
 std::size_t RangeTree::count(const ExactIsoRect& r) const {
-  const ExactBBox b = bbox(r);
-  Counter c;
-  walk(b, c);
-  return c.n + omega_.count(b);
+  return range::count_in(r, omega_, [this](const ExactBBox& b) {
+    Counter c;
+    walk(b, c);
+    return c.n;
+  });
 }
 
 std::vector<std::size_t> RangeTree::report(const ExactIsoRect& r) const {
-  const ExactBBox b = bbox(r);
-  std::vector<std::size_t> out;
-  const Tree& t = side_[b.side() == Side::front ? 0 : 1];
-  Reporter rep{t.byx, out};
-  walk(b, rep);
-  omega_.report(b, out);
-  std::sort(out.begin(), out.end());
-  return out;
+  return range::report_in(r, omega_, [this](const ExactBBox& b, std::vector<std::size_t>& out) {
+    Reporter rep{side_[b.side() == Side::front ? 0 : 1].byx, out};
+    walk(b, rep);
+  });
 }
 
 std::size_t RangeTree::entries() const {
