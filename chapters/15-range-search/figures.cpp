@@ -2,8 +2,12 @@
 #include "figures.hpp"
 
 #include <t2/draw.hpp>
+#include <t2/range/kdtree.hpp>
 #include <t2/range/locus.hpp>
 
+#include <random>
+
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -34,6 +38,25 @@ void points(dr::Figure& f, const std::vector<Point>& P) {
 
 // A quadrant towards −∞ from the corner (x, y): the points it dominates.
 IsoRect below_left(double x, double y) { return IsoRect(Point::cartesian(x, y), T1(0, -1), T1(0, -1)); }
+
+// The cuts of the kd-tree's nodes owning [lo, hi) of T (kdtree.hpp's implicit layout), each
+// drawn across its region [x0, x1] x [y0, y1].
+void cuts(dr::Figure& f, const std::vector<t2::DrawnPoint>& T, std::size_t lo, std::size_t hi, int depth,
+          double x0, double x1, double y0, double y1) {
+  if (hi - lo <= t2::KdTree::kLeaf) return;
+  const std::size_t mid = lo + (hi - lo) / 2;
+  const double x = T[mid].x / T[mid].w, y = T[mid].y / T[mid].w;  // drawing only: rounded
+  const dr::Style cut = dr::Style().color(pal::grey).width(depth == 0 ? 1.6 : depth == 1 ? 1.1 : 0.7);
+  if (depth % 2 == 0) {
+    f.add(t2::Segment(Point::cartesian(x, y0), Point::cartesian(x, y1)), cut);
+    cuts(f, T, lo, mid, depth + 1, x0, x, y0, y1);
+    cuts(f, T, mid + 1, hi, depth + 1, x, x1, y0, y1);
+  } else {
+    f.add(t2::Segment(Point::cartesian(x0, y), Point::cartesian(x1, y)), cut);
+    cuts(f, T, lo, mid, depth + 1, x0, x1, y0, y);
+    cuts(f, T, mid + 1, hi, depth + 1, x0, x1, y, y1);
+  }
+}
 
 }  // namespace
 
@@ -91,6 +114,22 @@ void figures(const std::filesystem::path& dir) {
     aside.lat = 35;
     aside.lon = -60;
     out.save(f, "rectangles-t2", wide, aside);
+  }
+  {  // The kd-tree of 60 points: its cuts, a query and the points it reports.
+    std::mt19937_64 rng(1515);
+    std::uniform_int_distribution<int> c(-24, 24);
+    std::vector<Point> K;
+    for (int k = 0; k < 60; ++k) K.push_back(Point::cartesian(c(rng) / 8.0, c(rng) / 8.0));
+    const t2::KdTree T(K);
+    const IsoRect q(Point::cartesian(-0.5, -1.25), T1(1, 2.25), T1(1, 2));
+    const t2::ExactIsoRect eq(t2::to_exact(q.a()), t2::to_exact(q.dx()), t2::to_exact(q.dy()));
+    const auto in = T.report(eq);
+    dr::Figure f;
+    f.add(q, shade);
+    cuts(f, T.tree_order(0), 0, T.tree_order(0).size(), 0, -3, 3, -3, 3);
+    for (std::size_t i = 0; i < K.size(); ++i)
+      f.add(K[i], dr::Style().size(2.5).color(std::binary_search(in.begin(), in.end(), i) ? pal::red : pal::black));
+    out.save(f, "kdtree", pv, above);
   }
   std::cerr << out.summary() << "\n";
 }

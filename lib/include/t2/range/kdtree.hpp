@@ -44,6 +44,9 @@ class KdTree {
   std::vector<std::size_t> report(const ExactIsoRect& r) const;
   /// The tree's nodes and leaves a query of r enters (the quantity the √n bound counts).
   std::size_t visits(const ExactIsoRect& r) const;
+  /// The points of side s (0 front, 1 back) in tree order: the implicit tree of the file
+  /// comment, for drawing its cuts.
+  const std::vector<DrawnPoint>& tree_order(int s) const { return side_[s]; }
 
  private:
   template <class Visit>
