@@ -1,4 +1,4 @@
-// t2 range from the command line: both algorithms agree, rectangles on the back and reaching Ω,
+// t2 range from the command line: the four algorithms agree, rectangles on the back and reaching Ω,
 // the points of Ω, and the exit statuses of bad and undefined rectangles.
 #include "cli_testing.hpp"
 
@@ -20,14 +20,29 @@ TEST_F(RangeCli, ListsAndCountsWithBothAlgorithms) {
         "1 0 0 0 1 1\n"       // the front quadrant x, y >= 0 up to Ω: p0 .. p3 and [0, 1, 1]
         "\n"
         "-1 0 0 0 1 1\n");    // the back quadrant towards [0, 1, 1], drawn towards (−, −): [0, 1, 1]
-  Result r = t2("range p.t2 r.txt");
-  EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, "0 1 3\n0 1 2 3\n4\n0 1 2 3 5\n5\n");
-  for (const char* a : {"brute", "locus"}) {
+  for (const char* a : {"brute", "kdtree", "rangetree"}) {
+    Result r = t2(std::string("range p.t2 r.txt --algorithm ") + a);
+    EXPECT_EQ(r.status, 0) << a << r.err;
+    EXPECT_EQ(r.out, "0 1 3\n0 1 2 3\n4\n0 1 2 3 5\n5\n") << a;
+  }
+  Result r;
+  for (const char* a : {"brute", "locus", "kdtree", "rangetree"}) {
     r = t2(std::string("range p.t2 r.txt --count --algorithm ") + a);
     EXPECT_EQ(r.status, 0) << a << r.err;
     EXPECT_EQ(r.out, "3\n4\n1\n5\n1\n") << a;
   }
+}
+
+// The rectangle is made from its corners as written: x1 is 1, not x0 + (x1 − x0) rounded in
+// doubles (here 1e16 + 1 rounds to an even number, and the far side would move to 0 or 2).
+TEST_F(RangeCli, TheCornersAreTakenExactly) {
+  write("p.t2", "0.5 0.5\n1 0.5\n1.5 0.5\n");
+  write("r.txt", "-1e16 0 1 1\n");
+  for (const char* a : {"brute", "locus", "kdtree", "rangetree"}) {
+    const Result r = t2(std::string("range p.t2 r.txt --count --algorithm ") + a);
+    EXPECT_EQ(r.out, "2\n") << a << r.err;
+  }
+  EXPECT_EQ(t2("range p.t2 r.txt --algorithm kdtree").out, "0 1\n");
 }
 
 TEST_F(RangeCli, BadLinesExitTwoAndUndefinedRectanglesExitThree) {
