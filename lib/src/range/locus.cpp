@@ -28,20 +28,18 @@ std::size_t at_most(const std::vector<ExactT1>& v, const ExactT1& x) {
   return static_cast<std::size_t>(std::upper_bound(v.begin(), v.end(), x, less) - v.begin());
 }
 
-int omega_slot(int sx, int sy) { return (sx + 1) * 3 + (sy + 1); }
-
 }  // namespace
 
 LocusCounter::LocusCounter(std::span<const Point> points) {
   if (points.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("LocusCounter: more points than 32-bit counts hold");
   std::vector<ExactPoint> on[2];
-  for (const Point& p : points) {
-    if (p.w() == 0) {
-      ++omega_[omega_slot(sign_of(p.x()), sign_of(p.y()))];
-      continue;
-    }
-    on[p.w() > 0 ? 0 : 1].push_back(to_exact(p));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if (p.w() == 0)
+      omega_.add(p, static_cast<std::uint32_t>(i));
+    else
+      on[p.w() > 0 ? 0 : 1].push_back(to_exact(p));
   }
   for (int s = 0; s < 2; ++s) {
     Grid& g = side_[s];
@@ -70,13 +68,8 @@ LocusCounter::LocusCounter(std::span<const Point> points) {
 
 std::size_t LocusCounter::count(const ExactIsoRect& r) const {
   const ExactBBox b = bbox(r);
-  std::size_t n = 0;
   // Ω: the vertex b or d, or the quarter from b to d (both axis directions and the quadrant).
-  const bool ix = is_infinite(r.dx()), iy = is_infinite(r.dy());
-  const int sx = sign_of(b.vertex(1).x()), sy = sign_of(b.vertex(3).y());
-  if (ix) n += omega_[omega_slot(sx, 0)];
-  if (iy) n += omega_[omega_slot(0, sy)];
-  if (ix && iy) n += omega_[omega_slot(sx, sy)];
+  std::size_t n = omega_.count(b);
   //> locus-query
   const Grid& g = side_[r.a().w() > 0 ? 0 : 1];
   const std::size_t i0 = below(g.xs, b.xmin()), i1 = at_most(g.xs, b.xmax());

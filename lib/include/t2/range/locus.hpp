@@ -20,14 +20,13 @@
 /// discards the points of Ω, arguing that they lie at most on the boundary of a rectangle. For a
 /// *closed* rectangle that reaches Ω they are in it (bbox.hpp: the vertex b or d, or the quarter
 /// of Ω from b to d), and `contains` says so; this counter counts them, in O(1): Ω points are
-/// kept as eight numbers, one per axis direction and one per open quadrant of directions, and a
-/// rectangle's part of Ω is one axis direction or a closed quarter (two axis directions and the
-/// open quadrant between).
+/// kept by direction (drawn.hpp), one list per axis direction and per open quadrant of
+/// directions, and a rectangle's part of Ω is one axis direction or a closed quarter (two axis
+/// directions and the open quadrant between): one list's size, or three.
 ///
 /// Exact: every comparison is on the exact values x/w (T¹ values, big integers), never on
 /// rounded quotients.
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -37,6 +36,7 @@
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/t1.hpp"
+#include "t2/range/drawn.hpp"
 
 namespace t2 {
 
@@ -60,7 +60,7 @@ class LocusCounter {
     std::uint32_t at(std::size_t i, std::size_t j) const { return q[i * (ys.size() + 1) + j]; }
   };
   Grid side_[2];                           ///< front, back
-  std::array<std::uint32_t, 9> omega_{};  ///< Ω points by (sign x + 1) * 3 + (sign y + 1)
+  OmegaPoints omega_;  ///< the points of Ω, by direction (drawn.hpp)
 };
 
 }  // namespace t2
