@@ -1,6 +1,6 @@
 #pragma once
-// The peers of `t2 bench range` (the worker's runs): nanoflann's kd-tree and Boost.Geometry's
-// rtree, each built on the points (w = 1, so x and y are the drawn doubles) and asked every
+// The peers of the problem `range` (`t2 bench kdtree`; the worker's runs): nanoflann's
+// kd-tree and Boost.Geometry's rtree, each built on the points (w = 1, so x and y are the drawn doubles) and asked every
 // window of range_windows, reporting the indices inside it. Comparisons of doubles are exact, so
 // both answer exactly what t2's structures answer.
 //

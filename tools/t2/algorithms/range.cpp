@@ -1,6 +1,6 @@
-// Range search (chapter 15, t2/range/), timed by `t2 bench range`: building the structure on
-// the points and reporting the points of every window (range_windows, made before the clock
-// starts, the same for the worker's peers). The answer's size is the number of reports summed
+// Range search (chapter 15, t2/range/), timed by `t2 bench kdtree` and `t2 bench rangetree`
+// (the problem `range`): building the structure on the points and reporting the points of
+// every window (range_windows, made before the clock starts, the same for the worker's peers). The answer's size is the number of reports summed
 // over the windows, which every exact implementation shares.
 #include "algorithms/range.hpp"
 

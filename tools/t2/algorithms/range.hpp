@@ -1,6 +1,6 @@
 #pragma once
-// The input of `t2 bench range` beyond the points (range.cpp): the query windows, the same for
-// t2's structures and for the peers.
+// The input of the problem `range` (`t2 bench kdtree`) beyond the points (range.cpp): the
+// query windows, the same for t2's structures and for the peers.
 
 #include <array>
 #include <span>
