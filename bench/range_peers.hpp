@@ -1,8 +1,8 @@
 #pragma once
 // The peers of the problem `range` (`t2 bench kdtree`; the worker's runs): nanoflann's
-// kd-tree and Boost.Geometry's rtree, each built on the points (w = 1, so x and y are the drawn doubles) and asked every
-// window of range_windows, reporting the indices inside it. Comparisons of doubles are exact, so
-// both answer exactly what t2's structures answer.
+// kd-tree and Boost.Geometry's rtree, each built on the points (w = 1, so x and y are the
+// drawn doubles) and asked every window of range_windows, reporting the indices inside it.
+// Comparisons of doubles are exact, so both answer exactly what t2's structures answer.
 //
 // nanoflann 1.4 has k-nearest and radius searches only. A window query is its radius search
 // with radius 1/2 under a metric that is, per coordinate, 0 when the coordinate is inside the
