@@ -171,7 +171,8 @@ Sign Circular::along(const At& x, const At& y, const Point& z) const {
 Sign Circular::compare(const At& x, Rank rx, const At& y, Rank ry) const {
   if (rx != ry) return rx < ry ? NEGATIVE : POSITIVE;
   if (rx == kUpper || rx == kLower) {
-    const Sign turn = orient3(o_, x, y);  // y after x when positive: less than a half turn apart
+    // y after x when positive: they are less than a half turn apart
+    const Sign turn = orient3(o_, x, y);
     if (turn != ZERO) return -turn;
     return along(x, y, r_);  // r is off every meridian but M0's and π's
   }
@@ -185,18 +186,20 @@ Sign Circular::compare(const Event& a, const Event& b) const {
 }
 
 //> circular-status
-/// Where piece k is against the current event: NEGATIVE below it (nearer o), POSITIVE above,
-/// ZERO through it.
+/// Where piece k is against the current event: NEGATIVE below it (nearer o),
+/// POSITIVE above, ZERO through it.
 Sign Circular::side_of_event(std::size_t k) const {
   const Piece& p = pieces_[k];
   if (current_.crossing && (k == current_.i || k == current_.j)) return ZERO;
-  return side(*p.la, *p.lb, current_.at);  // o is on p's left: an event on the left is nearer o
+  // o is on p's left: an event on the left is nearer o than p
+  return side(*p.la, *p.lb, current_.at);
 }
 
 bool Circular::below(std::size_t a, std::size_t b) const {
   if (a == b) return false;
   const Sign sa = side_of_event(a), sb = side_of_event(b);
-  if (sa != ZERO && sb != ZERO) throw std::logic_error("circular sweep: compared two pieces off the event");
+  if (sa != ZERO && sb != ZERO)
+    throw std::logic_error("circular sweep: compared two pieces off the event");
   if (sa != ZERO) return sa == NEGATIVE;
   if (sb != ZERO) return sb == POSITIVE;
   // Both through the event: a's end, on a's side of b's line all the way from the event.
@@ -238,9 +241,12 @@ Circular::Circular(const std::vector<Segment>& segments, const Point& centre)
       ends_.push_back({s.source(), s.source()});
       continue;
     }
-    // la first in the turn: o on the left of la ∨ lb (never on it: the centre's rule)
-    if (orient(s.source(), s.target(), o_) == POSITIVE) ends_.push_back({s.source(), s.target()});
-    else ends_.push_back({s.target(), s.source()});
+    // la first in the turn: o on the left of la ∨ lb (never on it: the centre's
+    // rule)
+    if (orient(s.source(), s.target(), o_) == POSITIVE)
+      ends_.push_back({s.source(), s.target()});
+    else
+      ends_.push_back({s.target(), s.source()});
     const auto& e = ends_.back();
     const At a{&e[0], {}}, b{&e[1], {}};
     const Rank ra = rank_of(a, false), rb = rank_of(b, true);
@@ -251,8 +257,8 @@ Circular::Circular(const std::vector<Segment>& segments, const Point& centre)
     // The cut point w = (la ∨ lb) ∧ (o ∨ r), or its antipode: the one on M0.
     JoinMeet<double> w = join_meet(e[0], e[1], o_, r_);
     if (side(o_, z_, At{nullptr, w}) != z_side_) w = {w.a, w.b, w.d, w.c, Sign(-w.w)};
-    add_piece(k, a, ra, At{nullptr, w}, kEnd);    // first piece: to M0 at the end of the turn
-    add_piece(k, At{nullptr, w}, kStart, b, rb);  // second piece: from M0 at its beginning
+    add_piece(k, a, ra, At{nullptr, w}, kEnd);    // to M0 at the end of the turn
+    add_piece(k, At{nullptr, w}, kStart, b, rb);  // from M0 at its beginning
   }
   //< circular-cut
   where_.resize(pieces_.size());
@@ -294,18 +300,19 @@ void Circular::make_groups() {
 }
 
 //> circular-check
-/// Schedules the crossing of a (below) and b (above), neighbours just after the current event,
-/// if they cross before the first of their ends: then they have swapped there.
+/// Schedules the crossing of a (below) and b (above), neighbours just after the current
+/// event, if they cross before the first of their ends: then they have swapped there.
 void Circular::check(std::size_t a, std::size_t b) {
   const Piece &p = pieces_[a], &q = pieces_[b];
   if (collinear(p.segment, q.segment)) return;  // overlaps are found at their ends
   const bool p_first = compare(p.end, p.end_rank, q.end, q.end_rank) != POSITIVE;
-  const bool swapped = p_first ? side(*q.la, *q.lb, p.end) == NEGATIVE : side(*p.la, *p.lb, q.end) == POSITIVE;
+  const bool swapped = p_first ? side(*q.la, *q.lb, p.end) == NEGATIVE
+                               : side(*p.la, *p.lb, q.end) == POSITIVE;
   if (!swapped) return;
   // The lines meet at ±m; the crossing is the one on p's segment, after la in the turn.
   JoinMeet<double> m = join_meet(*p.la, *p.lb, *q.la, *q.lb);
   Sign s = orient(o_, *p.la, m);
-  if (s == ZERO) s = orient(*p.lb, o_, m);  // m = ±la: then m is on the segment if lb is after it
+  if (s == ZERO) s = orient(*p.lb, o_, m);  // m = ±la: on the segment if lb is after it
   if (s == NEGATIVE) m = {m.c, m.d, m.a, m.b, Sign(-m.w)};
   Event e{At{nullptr, m}, kStart, true, static_cast<std::uint32_t>(std::min(a, b)),
           static_cast<std::uint32_t>(std::max(a, b))};
@@ -371,7 +378,9 @@ std::vector<IntersectionPoint> Circular::run() {
   //> circular-loop
   std::size_t g = 0;
   while (g < groups_.size() || !heap_.empty()) {
-    const bool endpoint = g < groups_.size() && (heap_.empty() || compare(groups_[g].event, heap_.front()) != POSITIVE);
+    const bool endpoint =
+        g < groups_.size() &&
+        (heap_.empty() || compare(groups_[g].event, heap_.front()) != POSITIVE);
     const Event e = endpoint ? groups_[g].event : heap_.front();
     while (!heap_.empty() && compare(heap_.front(), e) == ZERO) {  // every copy of e
       std::pop_heap(heap_.begin(), heap_.end(), Later{this});
