@@ -13,7 +13,7 @@
 /// but the two ends of every such piece are, each with all the segments through it; and a point
 /// where a third segment crosses the overlap is reported with all of them.
 ///
-/// Why the two algorithms agree on this: the brute force takes, for every pair, the crossing
+/// Why the algorithms agree on this: the brute force takes, for every pair, the crossing
 /// point or the two ends of the common piece (segment.hpp's `intersection`), and gives each
 /// point every segment of those pairs. A point of (a), endpoint of s, lies on every other
 /// segment t through it with s ∩ t a point or a piece ending at p (p is an end of s); a point
@@ -71,8 +71,8 @@ std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& s
 /// from a centre o to ¬o turns once around o, and the segments it crosses at its initial
 /// position are cut there. Every segment of chapter 02 (front, back, through Ω, on Ω, one
 /// point). The centre is [1, 0, 0] unless that lies on a segment's line, else the first point
-/// [1, t, t²] that lies on none (intersect/circular_centre.cpp). O((n + k) log n) predicates, k
-/// the number of reported points plus the pairs crossing at them (chapter 13).
+/// [1, t, t²] that lies on none (intersect/circular_centre.cpp). O((n + I) log n) time, I the
+/// number of pairs (reported point, segment through it) (chapter 13, Theorem 4).
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments);
 
 /// p scaled by the positive factor that leaves W, X, Y without common factor.
