@@ -136,6 +136,7 @@ class Circular {
   Event current_;
   Status status_;
   std::vector<Status::iterator> where_;
+  std::vector<std::size_t> ending_, going_, through_;  // reused by handle
   std::map<ExactPoint, std::pair<std::vector<std::size_t>, bool>, KeyLess> on_m0_;
 };
 
@@ -334,14 +335,18 @@ void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPo
     first = where_[e.i];
     while (first != status_.begin() && side_of_event(*std::prev(first)) == ZERO) --first;
   }
-  std::vector<std::size_t> ending, going;
+  auto& ending = ending_;
+  auto& going = going_;
+  auto& through = through_;
+  ending.clear();
+  going.clear();
+  through.clear();
   auto above = first;
   for (; above != status_.end() && side_of_event(*above) == ZERO; ++above) {
     const Piece& p = pieces_[*above];
     (g && compare(p.end, p.end_rank, e.at, e.rank) == ZERO ? ending : going).push_back(*above);
   }
   // The segments through e, and the report (on M0: gathered, judged at the end).
-  std::vector<std::size_t> through;
   for (std::size_t k : ending) through.push_back(pieces_[k].segment);
   for (std::size_t k : going) through.push_back(pieces_[k].segment);
   if (g) {
