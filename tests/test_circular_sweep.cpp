@@ -5,6 +5,7 @@
 // Every reported point is certified with GMP integers: it lies on every segment it names.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -88,6 +89,24 @@ TEST(CircularSweep, JoinMeetOrientAgreesWithTheConstructedPoints) {
     const Z3 y = cross3(cross3(z3(q[5]), z3(q[6])), cross3(z3(q[7]), z3(q[8])));
     const int expected = sgn(dot3(z3(q[0]), cross3(x, y)));
     EXPECT_EQ(static_cast<int>(orient(q[0], X, Y)), expected) << round;
+  }
+}
+
+TEST(CircularSweep, JoinMeetOrientIsExactOnNearDegenerateDoubles) {
+  // Full 53-bit coordinates over many exponents: p = a puts p, X and Y on the line a ∨ b when Y
+  // is on it too (the sign is 0 exactly), and p moved by one ulp gives a tiny nonzero sign.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> e(-60, 60);
+  const auto point = [&] { return Point(1, std::ldexp(u(rng), e(rng)), std::ldexp(u(rng), e(rng))); };
+  for (int round = 0; round < 500; ++round) {
+    Point q[8] = {point(), point(), point(), point(), point(), point(), point(), point()};
+    const JoinMeet<double> X{&q[0], &q[1], &q[2], &q[3], ZERO}, Y{&q[0], &q[1], &q[6], &q[7], ZERO};
+    EXPECT_EQ(orient(q[0], X, Y), ZERO) << round;
+    const Point p(1, std::nextafter(q[0].x(), 2.0), q[0].y());
+    const Z3 x = cross3(cross3(z3(q[0]), z3(q[1])), cross3(z3(q[2]), z3(q[3])));
+    const Z3 y = cross3(cross3(z3(q[0]), z3(q[1])), cross3(z3(q[6]), z3(q[7])));
+    EXPECT_EQ(static_cast<int>(orient(p, X, Y)), sgn(dot3(z3(p), cross3(x, y)))) << round;
   }
 }
 
@@ -197,6 +216,19 @@ TEST(CircularSweep, DegenerateGrids) {  // shared endpoints, overlaps, many thro
     const int c = round % 3 == 0 ? 1 : 2;
     const int lo = round % 4 == 1 ? -2 : round % 4 == 2 ? 0 : 1;
     check(random_segments(40, [&] { return random_point(rng, lo, 2, c); }));
+  }
+}
+
+TEST(CircularSweep, FullDoublesWithSharedEndpoints) {  // 53-bit coordinates, both sides, shared ends
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> side(0, 2);
+  for (int round = 0; round < 20 * testing::scale(); ++round) {
+    SCOPED_TRACE(round);
+    std::vector<Point> pool;
+    for (int k = 0; k < 30; ++k) pool.emplace_back(side(rng) == 0 ? -1.0 : 1.0, u(rng), u(rng));
+    std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
+    check(random_segments(50, [&] { return pool[pick(rng)]; }));
   }
 }
 
