@@ -97,6 +97,16 @@ std::vector<Segment> sweep_example() {
           seg(-1, 1, 6, 1),  seg(-6, 0, -2, -3), seg(1, -4, 3, 4)};
 }
 
+std::vector<Segment> circular_example() {
+  return {seg(2, -1, 3, 2),                              // s0: crosses l(0), cut at w
+          seg(3.5, -0.5, 1.5, 1),                        // s1: crosses s0 just after l(0)
+          seg(-1.5, 0.5, 0.5, 1.5),                      // s2: front, across l(135°) near o
+          seg(-4, 0.5, -1, 4),                           // s3: front, across l(135°) further out
+          Segment(Point(1, -2, 4), Point(-1, -1, -3)),   // s4: front to back through Ω
+          Segment(Point(-1, -1, 2), Point(-1, -2, 1)),   // s5: back, across l(135°)'s back part
+          Segment(Point(-1, 3, 1), Point(-1, 1, 3))};    // s6: back, already swept
+}
+
 void figures(const std::filesystem::path& dir) {
   dr::FigurePairs out(dir);
   // A set of segments with what the brute force reports, in a plane of the given half width.
@@ -168,6 +178,49 @@ void figures(const std::filesystem::path& dir) {
     dr::PlaneView pv;
     pv.half_width = 4;
     out.save(f, "circular", pv, towards(Point::cartesian(1.5, 0.2)));
+  }
+  {  // The circular sweep at θ = 135°: l(θ), the status from o outwards, the cut at l(0).
+    const auto S = circular_example();
+    const auto X = t2::intersections(S, t2::IntersectAlgorithm::circular);
+    const Point o(1, 0, 0), d(0, -1, 1), anti_o(-1, 0, 0), r(0, 1, 0);
+    const t2::ExactPoint eo = t2::to_exact(o), ed = t2::to_exact(d);
+    const auto angle = [](const Point& p) {  // the direction of (x, y), in [0, 2π)
+      const double a = std::atan2(p.y(), p.x());
+      return a < 0 ? a + 2 * std::numbers::pi : a;
+    };
+    dr::Figure f;
+    f.segment(o, r, dr::Style().color(pal::grey).width(1));
+    f.segment(r, anti_o, dr::Style().color(pal::grey).width(1).dash({4, 3}));
+    f.segment(o, d, dr::Style().color(pal::orange).width(2));
+    f.segment(d, anti_o, dr::Style().color(pal::orange).width(2).dash({6, 3}));
+    f.add(o, dr::Style().label("o").color(pal::orange).label_angle(-60));
+    std::vector<std::pair<double, std::size_t>> status;  // (distance from o on the sphere, index)
+    for (std::size_t i = 0; i < S.size(); ++i) {
+      const t2::ExactSegment e(t2::to_exact(S[i].source()), t2::to_exact(S[i].target()));
+      t2::ExactPoint m = t2::meet(t2::join(e.source(), e.target()), t2::join(eo, ed));
+      if (m.x() * ed.x() + m.y() * ed.y() < 0) m = t2::antipode(m);  // the one on l(θ)
+      const bool met = t2::contains(e, m);
+      f.segment(S[i].source(), S[i].target(), dr::Style().color(met ? pal::blue : pal::grey).width(met ? 1.8 : 1.2));
+      f.add(label_point(S[i].source(), S[i].target()), dr::Style().label("s" + std::to_string(i)).size(0));
+      if (!met) continue;
+      const Point p = t2::to_double(m);
+      status.push_back({std::atan2(std::hypot(p.x(), p.y()), p.w()), i});
+    }
+    std::sort(status.begin(), status.end());
+    for (std::size_t k = 0; k < status.size(); ++k) {
+      const std::size_t i = status[k].second;
+      t2::ExactPoint m = t2::meet(t2::join(t2::to_exact(S[i].source()), t2::to_exact(S[i].target())), t2::join(eo, ed));
+      if (m.x() * ed.x() + m.y() * ed.y() < 0) m = t2::antipode(m);
+      f.add(t2::to_double(m), dr::Style().color(pal::blue).size(3.5).label(std::to_string(k + 1) + ": s" + std::to_string(i)).label_angle(-135));
+    }
+    for (const auto& x : X) {
+      const Point p = t2::to_double(x.point);
+      const bool found = angle(p) < 0.75 * std::numbers::pi;
+      f.add(p, dr::Style().color(found ? pal::red : pal::grey).size(found ? 4.5 : 3.5));
+    }
+    dr::PlaneView pv;
+    pv.half_width = 5;
+    out.save(f, "circular-status", pv, towards(Point::cartesian(-0.6, 0.6)));
   }
   std::cerr << out.summary() << "\n";
 }

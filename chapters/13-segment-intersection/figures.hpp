@@ -20,6 +20,9 @@ std::vector<t2::Segment> beside_triple_point();
 /// Six front segments for the picture of the sweep's status.
 std::vector<t2::Segment> sweep_example();
 
+/// Segments of every kind around the origin, for the picture of the circular sweep at 135°.
+std::vector<t2::Segment> circular_example();
+
 /// Writes the chapter's figures into `dir`.
 void figures(const std::filesystem::path& dir);
 

@@ -1,6 +1,6 @@
 // Chapter 13: segment intersection. What is reported (the degenerate cases), the brute force on
-// the whole of T², Bentley–Ottmann on the front side, checked against each other; the figures in
-// both models (figures.cpp).
+// the whole of T², Bentley–Ottmann on the front side, the circular sweep of T², checked against
+// each other; the figures in both models (figures.cpp).
 #include <t2/gen/generate.hpp>
 #include <t2/intersect/intersections.hpp>
 #include <t2/draw.hpp>
@@ -88,6 +88,41 @@ void random_sets() {
   require(agree == 40, "random sets");
 }
 
+void circular_sweep() {
+  std::cout << "== the circular sweep of T²\n";
+  //> circular-demo
+  const std::vector<Segment> S = chapter13::two_sided();
+  const auto circular = t2::intersections(S, t2::IntersectAlgorithm::circular);
+  for (const auto& p : circular) std::cout << t2::to_line(p) << "\n";
+  std::cout << "the brute force gives the same lines: " << std::boolalpha
+            << same(circular, t2::intersections(S, t2::IntersectAlgorithm::brute)) << "\n";
+  //< circular-demo
+  require(same(circular, t2::intersections(S, t2::IntersectAlgorithm::brute)), "circular sweep");
+  // Random segments of every kind: small integer coordinates, w in {-1, 0, 1, 2}.
+  std::uint64_t state = 13;
+  const auto next = [&state](int n) {
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  };
+  int agree = 0, points = 0;
+  for (int round = 0; round < 40; ++round) {
+    std::vector<Segment> T;
+    while (T.size() < 60) {
+      const int a[6] = {next(4) - 1, next(9) - 4, next(9) - 4, next(4) - 1, next(9) - 4, next(9) - 4};
+      if ((a[0] == 0 && a[1] == 0 && a[2] == 0) || (a[3] == 0 && a[4] == 0 && a[5] == 0)) continue;
+      const Point p(a[0], a[1], a[2]), q(a[3], a[4], a[5]);
+      if (!(p == t2::antipode(q))) T.emplace_back(p, q);
+    }
+    const auto c = t2::intersections(T, t2::IntersectAlgorithm::circular);
+    agree += same(c, t2::intersections(T, t2::IntersectAlgorithm::brute));
+    points += static_cast<int>(c.size());
+  }
+  std::cout << "40 sets of 60 segments of every kind: the circular sweep equals the brute force on "
+            << agree << ", " << points << " points in all\n";
+  require(agree == 40, "circular sweep on random sets");
+  std::cout << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -96,5 +131,6 @@ int main(int argc, char** argv) {
   two_sides();
   beside_a_triple_point();
   random_sets();
+  circular_sweep();
   chapter13::figures(dir);
 }

@@ -39,7 +39,9 @@ int intersect(const Options& o) {
   std::vector<t2::Segment> segments;
   segments.reserve(scene.segments.size());
   for (const auto& s : scene.segments) segments.push_back(s.segment());
-  const auto algorithm = o.algorithm == "brute" ? t2::IntersectAlgorithm::brute : t2::IntersectAlgorithm::sweep;
+  const auto algorithm = o.algorithm == "brute"      ? t2::IntersectAlgorithm::brute
+                         : o.algorithm == "circular" ? t2::IntersectAlgorithm::circular
+                                                     : t2::IntersectAlgorithm::sweep;
   std::vector<t2::IntersectionPoint> points;
   try {
     points = t2::intersections(segments, algorithm);
@@ -68,15 +70,16 @@ Action setup(Arguments& app) {
       "their common piece, not its inner points.");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_option("--algorithm", o->algorithm,
-                 "sweep (default: Bentley-Ottmann, front segments only) or brute (every pair,\n"
-                 "every segment of T2: front, back, crossing Omega, on Omega)")
+                 "sweep (default: Bentley-Ottmann, front segments only), brute (every pair,\n"
+                 "every segment of T2: front, back, crossing Omega, on Omega) or circular (the\n"
+                 "circular sweep of T2 around a point, O((n + k) log n), every segment of T2)")
       ->type_name("A")
-      ->check(IsMember({"brute", "sweep"}));
+      ->check(IsMember({"brute", "sweep", "circular"}));
   add_drawing_options(app, o->drawing, "the segments and the intersection points");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong); 3 the sweep\n"
       "was given a segment with an endpoint behind or on Omega (the message names it; the\n"
-      "brute force takes it).");
+      "brute force and the circular sweep take it).");
   return [o] { return intersect(*o); };
 }
 

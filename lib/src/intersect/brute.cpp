@@ -11,7 +11,14 @@
 
 namespace t2 {
 
-const char* name(IntersectAlgorithm a) { return a == IntersectAlgorithm::brute ? "brute" : "sweep"; }
+const char* name(IntersectAlgorithm a) {
+  switch (a) {
+    case IntersectAlgorithm::brute: return "brute";
+    case IntersectAlgorithm::sweep: return "sweep";
+    case IntersectAlgorithm::circular: return "circular";
+  }
+  return "?";
+}
 
 ExactPoint reduced(const ExactPoint& p) {
   Integer g;
@@ -28,7 +35,12 @@ std::string to_line(const IntersectionPoint& p) {
 }
 
 std::vector<IntersectionPoint> intersections(const std::vector<Segment>& segments, IntersectAlgorithm algorithm) {
-  return algorithm == IntersectAlgorithm::brute ? intersections_brute(segments) : intersections_sweep(segments);
+  switch (algorithm) {
+    case IntersectAlgorithm::brute: return intersections_brute(segments);
+    case IntersectAlgorithm::circular: return intersections_circular(segments);
+    case IntersectAlgorithm::sweep: break;
+  }
+  return intersections_sweep(segments);
 }
 
 namespace {

@@ -1,7 +1,8 @@
 #pragma once
 /// @file intersections.hpp
 /// @brief The intersection points of a set of segments of T² (chapter 13): brute force, the
-/// reference, on every kind of segment; Bentley–Ottmann on front segments.
+/// reference, on every kind of segment; Bentley–Ottmann on front segments; the circular sweep
+/// of T² (seed 000, Algorithm 16) on every kind of segment.
 ///
 /// **What is reported.** A point p is reported when it lies on two or more segments and
 ///   (a) p is an endpoint of one of the segments through it (a zero-length segment counts: its
@@ -12,7 +13,7 @@
 /// but the two ends of every such piece are, each with all the segments through it; and a point
 /// where a third segment crosses the overlap is reported with all of them.
 ///
-/// Why the two algorithms agree on this: the brute force takes, for every pair, the crossing
+/// Why the algorithms agree on this: the brute force takes, for every pair, the crossing
 /// point or the two ends of the common piece (segment.hpp's `intersection`), and gives each
 /// point every segment of those pairs. A point of (a), endpoint of s, lies on every other
 /// segment t through it with s ∩ t a point or a piece ending at p (p is an end of s); a point
@@ -45,10 +46,11 @@ struct IntersectionPoint {
 /// The algorithms of `intersections`.
 enum class IntersectAlgorithm {
   brute,  ///< every pair, O(n²): every segment of T²
-  sweep,  ///< Bentley–Ottmann, O((n + k) log n): front segments only
+  sweep,     ///< Bentley–Ottmann, O((n + k) log n): front segments only
+  circular,  ///< the circular sweep around a point, O((n + k) log n): every segment of T²
 };
 
-/// "brute" or "sweep".
+/// "brute", "sweep" or "circular".
 const char* name(IntersectAlgorithm a);
 
 /// The intersection points of `segments` (file comment), by the given algorithm. The sweep
@@ -64,6 +66,14 @@ std::vector<IntersectionPoint> intersections_brute(const std::vector<Segment>& s
 /// Bentley–Ottmann (intersect/sweep.cpp) on front segments, in O((n + k) log n) predicates.
 /// Throws `Undefined` for a segment with an endpoint on Ω or behind.
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments);
+
+/// The circular sweep of T² (intersect/circular.cpp; seed 000 §5.8, Algorithm 16): a half-line
+/// from a centre o to ¬o turns once around o, and the segments it crosses at its initial
+/// position are cut there. Every segment of chapter 02 (front, back, through Ω, on Ω, one
+/// point). The centre is [1, 0, 0] unless that lies on a segment's line, else the first point
+/// [1, t, t²] that lies on none (intersect/circular_centre.cpp). O((n + I) log n) time, I the
+/// number of pairs (reported point, segment through it) (chapter 13, Theorem 4).
+std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments);
 
 /// p scaled by the positive factor that leaves W, X, Y without common factor.
 ExactPoint reduced(const ExactPoint& p);

@@ -15,6 +15,7 @@
 /// cancelling, each coordinate is a sum of 2·2·2 = 8 monomials (each line coefficient has 2).
 /// - `turn(a, b, c, d)` = sign w: 8 monomials of degree (1, 1, 1, 1);
 /// - `orient(p, q, X)` = (p × q)·X: 3·2·8 = 48 monomials, degree 1 in each of 6 points;
+/// - `orient(p, X, Y)` = p·(X × Y) of two meets: 384 monomials, degree 1 in each of 9 points;
 /// - `compare_x(X, r)` for a point r: with sign w_X = s₁ and sign r.w = s₂ (both nonzero), the
 ///   normalized x of lexicographic.hpp compares as s₁(x_X·r.w − r.x·w_X) when s₁ = s₂ and
 ///   s₂(x_X·r.w + r.x·w_X) otherwise (meet_point.hpp's file comment): 2·8 = 16 monomials of
@@ -26,7 +27,7 @@
 /// filter.hpp's theorem applies as it stands: with u = 2⁻⁵³, k the roundings met by a monomial
 /// (derived at compile time, with `count`) and Mᵢ the largest |coordinate| of point i, the
 /// rounded value v errs by at most γ_k·count·Π Mᵢ; the filter's constant is count·k·u·(1+2⁻⁴⁰),
-/// trusted for every Mᵢ in [2⁻ᴿ, 2ᴿ], R = ⌊900/D⌋ (D = 4, 6, 5, 8: R = 225, 150, 180, 112).
+/// trusted for every Mᵢ in [2⁻ᴿ, 2ᴿ], R = ⌊900/D⌋ (D = 4, 6, 9, 5, 8: R = 225, 150, 100, 180, 112).
 /// Outside that range, or when the bound cannot decide, filter.hpp's exact stages (integer
 /// certificate, semi-static bound, expansions, dyadic GMP numbers) give the exact sign: every
 /// predicate here is exact for every finite double. tests/test_join_meet.cpp checks them
@@ -190,6 +191,24 @@ Sign orient(const BasicPoint<T>& p, const BasicPoint<T>& q, const JoinMeet<T>& x
         return n.W * detail::meet_w(l, m) + n.X * detail::meet_x(l, m) + n.Y * detail::meet_y(l, m);
       },
       p, q, *x.a, *x.b, *x.c, *x.d);
+}
+
+/// Δ(p, X, Y) for X = (a ∨ b) ∧ (c ∨ d) and Y = (e ∨ f) ∧ (g ∨ h), neither constructed: the
+/// determinant |p; X; Y| = p·(X × Y), 3·2·8·8 = 384 monomials of degree 1 in each of the nine
+/// points (invariant under translation, as Δ is). The circular sweep of chapter 13 orders its
+/// events around a centre p with it. Exact for every finite double.
+template <class T>
+Sign orient(const BasicPoint<T>& p, const JoinMeet<T>& x, const JoinMeet<T>& y) {
+  return detail::invariant_sign(
+      [](const auto& u, const auto& a, const auto& b, const auto& c, const auto& d, const auto& e, const auto& f,
+         const auto& g, const auto& h) {
+        const auto l = detail::join_of(a, b), m = detail::join_of(c, d);
+        const auto n = detail::join_of(e, f), k = detail::join_of(g, h);
+        const auto xw = detail::meet_w(l, m), xx = detail::meet_x(l, m), xy = detail::meet_y(l, m);
+        const auto yw = detail::meet_w(n, k), yx = detail::meet_x(n, k), yy = detail::meet_y(n, k);
+        return u.w * (xx * yy - xy * yx) - u.x * (xw * yy - xy * yw) + u.y * (xw * yx - xx * yw);
+      },
+      p, *x.a, *x.b, *x.c, *x.d, *y.a, *y.b, *y.c, *y.d);
 }
 
 namespace detail {
