@@ -19,7 +19,6 @@ using namespace detail;
 using Index = EnclosingIndex;
 using Face = std::array<Index, 3>;
 
-//> sec-acute
 /// Does every site of P[at] lie in the closed disk d? (`at` empty: every site of P.)
 bool holds(const Disk& d, const std::vector<Point>& P, const std::vector<Index>& at) {
   if (at.empty()) {
@@ -32,16 +31,19 @@ bool holds(const Disk& d, const std::vector<Point>& P, const std::vector<Index>&
   return true;
 }
 
-/// The circle of the acute face among the farthest-point Delaunay faces F (site indices into
-/// P): the one whose circumcentre lies strictly inside it, each vertex strictly outside the
-/// disk on the opposite edge. When the diameter's circle fails, exactly the smallest
-/// enclosing circle's face is acute (chapter 12), whatever the fan of cocircular sites.
+//> sec-acute
+/// The circle of the acute face among the farthest-point Delaunay faces F (site
+/// indices into P): the one whose circumcentre lies strictly inside it, each vertex
+/// strictly outside the disk on the opposite edge. When the diameter's circle fails,
+/// exactly the smallest enclosing circle's face is acute (chapter 12, Theorem 9),
+/// whatever the fan of cocircular sites.
 Disk acute_face(const std::vector<Point>& P, const std::vector<Face>& F) {
   for (const auto& [a, b, c] : F)
-    if (in_diameter_disk(P[b], P[c], P[a]) == NEGATIVE && in_diameter_disk(P[c], P[a], P[b]) == NEGATIVE &&
-        in_diameter_disk(P[a], P[b], P[c]) == NEGATIVE)
+    if (in_diameter_disk(P[b], P[c], P[a]) == NEGATIVE &&  // the angle at a is acute
+        in_diameter_disk(P[c], P[a], P[b]) == NEGATIVE &&  // at b
+        in_diameter_disk(P[a], P[b], P[c]) == NEGATIVE)    // at c
       return circumcircle(P[a], a, P[b], b, P[c], c);
-  throw std::logic_error("smallest enclosing circle: no acute farthest-point face (cannot happen)");
+  throw std::logic_error("no acute farthest-point face (cannot happen)");
 }
 //< sec-acute
 
@@ -74,7 +76,8 @@ EnclosingCircle smallest_enclosing_circle_shamos(std::span<const Point> points) 
   Index a = far[0][0], b = far[0][1];
   for (const Face& t : far)
     for (int m = 0; m < 3; ++m)
-      if (compare_distance(P[a], P[b], P[t[m]], P[t[(m + 1) % 3]]) < 0) a = t[m], b = t[(m + 1) % 3];
+      if (compare_distance(P[a], P[b], P[t[m]], P[t[(m + 1) % 3]]) < 0)
+        a = t[m], b = t[(m + 1) % 3];
   Disk d = diameter(P[a], a, P[b], b);
   if (!holds(d, P, {})) d = acute_face(P, far);  // else a farthest-point Voronoi vertex
   //< sec-shamos
@@ -98,7 +101,8 @@ EnclosingCircle smallest_enclosing_circle_bt(std::span<const Point> points) {
     std::vector<Point> C;
     for (Index i : corners) C.push_back(P[i]);
     std::vector<Face> far;
-    for (const auto& t : farthest_delaunay(C)) far.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+    for (const auto& t : farthest_delaunay(C))
+      far.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
     d = acute_face(P, far);
   }
   //< sec-bt
