@@ -71,6 +71,24 @@ TEST(EnclosingCircleAlgorithms, BruteForce) {
   }
 }
 
+// Drawn positions 2^±500 apart from their weights, far outside the filters' range, where the
+// complex, the hull and the diameter test all reach their exact stages.
+TEST(EnclosingCircleAlgorithms, ExtremeScales) {
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> c(-5, 5), size(2, 8), e(0, 2);
+  const int exps[3] = {-500, 0, 500};
+  for (int round = 0; round < 120; ++round) {
+    const int n = size(rng), side = round % 2 ? -1 : 1, ex = exps[e(rng)], wx = exps[e(rng)];
+    std::vector<Point> P;
+    for (int m = 0; m < n; ++m) {
+      const double w = side * std::ldexp(1.0 + (m % 2), wx), s = std::ldexp(1.0 + (m % 2), ex);
+      P.emplace_back(w, s * c(rng), s * c(rng));
+    }
+    SCOPED_TRACE(round);
+    expect_three(P, brute(P));
+  }
+}
+
 // One, two, three sites; equal sites; collinear sites with duplicates; a right triangle (the
 // diameter is a side and the third site on the circle).
 TEST(EnclosingCircleAlgorithms, FewAndDegenerate) {
