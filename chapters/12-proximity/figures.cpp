@@ -122,12 +122,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(t2::to_double(c.center), dr::Style().color(pal::red).size(3));
     const char* names[] = {"a", "d", "b", "c"};
     for (std::size_t i = 0; i < Q.size(); ++i) f.add(Q[i], dr::Style().size(3.5).label(names[i]));
-    dr::PlaneView pv;
-    pv.half_width = 1.5;
-    dr::SphereView above;
-    above.lat = 60;
-    above.lon = -90;
-    out.save(f, "sec-diameter", pv, above);
+    out.save(f, "sec-diameter", dr::PlaneView{.half_width = 1.5}, dr::SphereView{.lat = 60, .lon = -90});
   }
   std::cerr << out.summary() << "\n";
 }
