@@ -63,9 +63,10 @@ Action setup(Arguments& app) {
       "one side it is the classic circle of their drawn positions, centred on that side; with a\n"
       "point on Omega, or points on both sides, no circle is the smallest (exit 3).");
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
-  app.add_option("--algorithm", o->algorithm, "welzl (randomized, expected O(n)), shamos (the farthest-point\n"
-                 "diagram of all the points) or bt (Bhattacharya-Toussaint: the hull, its diameter, the\n"
-                 "farthest-point diagram of its corners)")
+  app.add_option("--algorithm", o->algorithm, "welzl (randomized, expected O(n); the default), shamos\n"
+                 "(the farthest-point diagram of all the points) or bt (Bhattacharya-Toussaint:\n"
+                 "the hull, its diameter, the farthest-point diagram of its corners)")
+      ->type_name("A")
       ->check(IsMember({"welzl", "shamos", "bt"}));
   add_drawing_options(app, o->drawing, "the points, the circle and its centre");
   app.footer(
