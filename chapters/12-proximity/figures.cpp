@@ -4,9 +4,11 @@
 #include <t2/draw.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/proximity/enclosing_circle.hpp>
+#include <t2/proximity/enclosing_circle_voronoi.hpp>
 #include <t2/proximity/nearest_neighbors.hpp>
 #include <t2/proximity/spanning_tree.hpp>
 #include <t2/triangulation/delaunay.hpp>
+#include <t2/voronoi/complex.hpp>
 
 #include <algorithm>
 #include <iostream>
@@ -105,6 +107,22 @@ void figures(const std::filesystem::path& dir) {
     side_on.lat = 5;
     side_on.lon = 10;
     out.save(f, "sec-t2", pv, side_on);
+  }
+  {  // Seed 003's figure 4.31: the diameter a b is no farthest-point Delaunay edge.
+    const std::vector<Point> Q{Point::cartesian(-1, 0), Point::cartesian(0.6, -0.9), Point::cartesian(1, 0),
+                               Point::cartesian(0.6, 0.9)};  // a d b c, a tenth of sec-diameter.t2
+    dr::Figure f;
+    f.add(t2::ExactCircle(t2::ExactPoint(1, 0, 0), t2::to_exact(Q[0])),
+          dr::Style().color(pal::grey).width(1.2).dash({4, 3}));  // the circle on the diameter
+    f.segment(Q[0], Q[2], dr::Style().color(pal::grey).width(1.2).dash({4, 3}));
+    for (const auto& t : t2::farthest_delaunay(Q))
+      for (int k = 0; k < 3; ++k) f.segment(Q[t[k]], Q[t[(k + 1) % 3]], dr::Style().color(pal::blue).width(1.6));
+    const t2::EnclosingCircle c = t2::smallest_enclosing_circle_shamos(Q);
+    f.add(t2::ExactCircle(c.center, t2::to_exact(Q[c.support[0]])), dr::Style().color(pal::red).width(2));
+    f.add(t2::to_double(c.center), dr::Style().color(pal::red).size(3));
+    const char* names[] = {"a", "d", "b", "c"};
+    for (std::size_t i = 0; i < Q.size(); ++i) f.add(Q[i], dr::Style().size(3.5).label(names[i]));
+    out.save(f, "sec-diameter", dr::PlaneView{.half_width = 1.5}, dr::SphereView{.lat = 60, .lon = -90});
   }
   std::cerr << out.summary() << "\n";
 }

@@ -9,29 +9,10 @@
 #include "t2/kernel/circle.hpp"
 #include "t2/kernel/filter.hpp"
 #include "t2/kernel/incircle.hpp"
+#include "enclosing_disk.hpp"
 
 namespace t2 {
-namespace {
-
-using Index = EnclosingCircle::Index;
-
-/// A circle of the algorithm: the sites that define it (1, 2 or 3 of them), as points, so that
-/// a test reads no other memory, and as input indices. Three sites are kept counter-clockwise
-/// (in the T² orientation), so that in_circle alone says inside (POSITIVE) or out.
-struct Disk {
-  std::array<Point, 3> p{Point(1, 0, 0), Point(1, 0, 0), Point(1, 0, 0)};
-  std::array<Index, 3> s{};
-  int k = 0;  ///< how many sites: 1 a point, 2 a diameter, 3 a circumcircle
-};
-
-/// The circle with diameter ab.
-Disk diameter(const Point& a, Index i, const Point& b, Index j) { return Disk{{a, b, a}, {i, j, i}, 2}; }
-
-/// The circle through a, b, c (not collinear), counter-clockwise.
-Disk circumcircle(const Point& a, Index i, const Point& b, Index j, const Point& c, Index k) {
-  if (orient(a, b, c) == NEGATIVE) return Disk{{a, c, b}, {i, k, j}, 3};
-  return Disk{{a, b, c}, {i, j, k}, 3};
-}
+namespace detail {
 
 //> in-diameter-disk
 /// The side of p relative to the closed disk with diameter ab (proper points of one
@@ -53,6 +34,13 @@ Sign side(const Disk& d, const Point& q) {
   if (d.k == 2) return in_diameter_disk(d.p[0], d.p[1], q);
   return q == d.p[0] ? ZERO : NEGATIVE;
 }
+
+}  // namespace detail
+
+namespace {
+
+using namespace detail;
+using Index = EnclosingCircle::Index;
 
 /// The points in the order of the algorithm, with their input indices: a Fisher–Yates shuffle
 /// with a fixed seed (header). The points themselves are moved, so the scans read memory in order.
@@ -139,6 +127,19 @@ Rational squared_radius(const ExactPoint& c, const ExactPoint& a) {
 /// smallest_enclosing_circle, telling `hook` (NoTrace: nothing, and no trace code).
 template <class H>
 EnclosingCircle enclosing_circle(std::span<const Point> points, H& hook) {
+  const Sign sigma = enclosing_side(points);
+  // Back sites: their drawn positions (antipodes), and the antipode of their answer.
+  std::vector<Point> P = drawn_sites(points, sigma);
+  std::vector<Index> id;
+  shuffle(P, id);
+  return enclosing_answer(P, id, welzl(P, id, hook), sigma);
+}
+
+}  // namespace
+
+namespace detail {
+
+Sign enclosing_side(std::span<const Point> points) {
   if (points.empty()) throw BadInput("the smallest enclosing circle needs at least one site");
   if (points.size() >= std::numeric_limits<Index>::max())
     throw BadInput("the smallest enclosing circle takes at most 2^32 - 2 sites");
@@ -158,27 +159,44 @@ EnclosingCircle enclosing_circle(std::span<const Point> points, H& hook) {
                              "the smallest enclosing circle is undefined with site " + std::to_string(omega) +
                                  " on Omega: every centre on the side of the proper sites (on either side if there "
                                  "are none) has radius +inf, so no circle is the smallest");
-  const Sign sigma = front < n ? POSITIVE : NEGATIVE;
-  // Back sites: their drawn positions (antipodes), and the antipode of their answer.
+  return front < n ? POSITIVE : NEGATIVE;
+}
+
+std::vector<Point> drawn_sites(std::span<const Point> points, Sign sigma) {
   std::vector<Point> P(points.begin(), points.end());
   if (sigma == NEGATIVE)
     for (Point& p : P) p = antipode(p);
-  std::vector<Index> id;
-  shuffle(P, id);
-  const Disk d = welzl(P, id, hook);
+  return P;
+}
+
+EnclosingCircle enclosing_answer(const std::vector<Point>& P, const std::vector<Index>& id, const Disk& d,
+                                 Sign sigma) {
   EnclosingCircle c;
-  c.support.assign(d.s.begin(), d.s.begin() + d.k);
-  std::sort(c.support.begin(), c.support.end());
   c.center = center_of(d);
   c.radius2 = squared_radius(c.center, to_exact(d.p[0]));
-  for (Index i = 0; i < n; ++i)
-    if (side(d, P[i]) == ZERO) c.on_circle.push_back(id[i]);
-  std::sort(c.on_circle.begin(), c.on_circle.end());
+  std::vector<std::pair<Index, Point>> on;  // the sites on the circle, by input index
+  for (Index i = 0; i < P.size(); ++i)
+    if (side(d, P[i]) == ZERO) on.emplace_back(id.empty() ? i : id[i], P[i]);
+  std::sort(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // The support: Welzl's run (the same shuffle) on the sites of the circle alone, in input
+  // order. Their smallest circle is d (its centre is in their hull, chapter 12), so the
+  // support defines d, and it depends on the set of sites on d only, not on how d was found.
+  std::vector<Point> Q;
+  for (const auto& [i, p] : on) {
+    c.on_circle.push_back(i);
+    Q.push_back(p);
+  }
+  std::vector<Index> qid;
+  shuffle(Q, qid);
+  NoTrace none;
+  const Disk e = welzl(Q, qid, none);
+  for (int m = 0; m < e.k; ++m) c.support.push_back(c.on_circle[e.s[m]]);
+  std::sort(c.support.begin(), c.support.end());
   if (sigma == NEGATIVE) c.center = antipode(c.center);
   return c;
 }
 
-}  // namespace
+}  // namespace detail
 
 EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
   NoTrace none;

@@ -1,7 +1,8 @@
 // The proximity problems of T² (chapter 12, t2/proximity/), timed by `t2 bench` on points of
 // the plane; Welzl's smallest enclosing circle is animated too (Kruskal's animation is issue
-// 25's later part). Each but `sec` and `closest-pair-divide` builds the Delaunay triangulation of each side in its run,
-// so `t2 bench emst delaunay` compares the whole cost with the triangulation's.
+// 25's later part). Each but the three `sec` ones (Shamos's builds the whole complex) and `closest-pair-divide`
+// builds the Delaunay triangulation of each side in its run, so `t2 bench emst delaunay` compares the whole cost with
+// the triangulation's.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "t2/proximity/closest_pair.hpp"
 #include "t2/proximity/empty_circle.hpp"
 #include "t2/proximity/enclosing_circle.hpp"
+#include "t2/proximity/enclosing_circle_voronoi.hpp"
 #include "t2/proximity/nearest_neighbors.hpp"
 #include "t2/proximity/spanning_tree.hpp"
 
@@ -152,7 +154,27 @@ T2_ALGORITHM({.name = "sec",  // what `t2 sec` runs
                   return t2::smallest_enclosing_circle(std::span<const t2::Point>(P)).support.size();
                 };
               },
-              .peers = {"cgal"}});
+              .peers = {"cgal", "sec-shamos", "sec-bt"}});
+
+T2_ALGORITHM({.name = "sec-shamos",  // t2 sec --algorithm shamos
+              .problem = "sec",
+              .summary = "t2::smallest_enclosing_circle_shamos: the farthest-point Delaunay faces (the back half of the T2 complex)",
+              .title = "the smallest enclosing circle (Shamos, farthest-point diagram)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  return t2::smallest_enclosing_circle_shamos(std::span<const t2::Point>(P)).support.size();
+                };
+              }});
+
+T2_ALGORITHM({.name = "sec-bt",  // t2 sec --algorithm bt
+              .problem = "sec",
+              .summary = "t2::smallest_enclosing_circle_bt: Bhattacharya-Toussaint, the hull's diameter, then its farthest-point faces",
+              .title = "the smallest enclosing circle (Bhattacharya-Toussaint)",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  return t2::smallest_enclosing_circle_bt(std::span<const t2::Point>(P)).support.size();
+                };
+              }});
 
 T2_ALGORITHM({.name = "lec",  // what `t2 lec` runs
               .problem = "lec",

@@ -41,10 +41,13 @@
 /// **Determinism.** The sites are shuffled by a Fisher–Yates shuffle driven by a fixed-seed
 /// std::mt19937_64 (reduction by `%`, not std::uniform_int_distribution, whose algorithm the
 /// standard leaves to each library), so the same input gives the same support on every platform.
-/// The circle itself is unique; only which of several cocircular sites make up `support` depends
-/// on the order. Welzl's move-to-front heuristic is not used: the expected O(n) bound (chapter
-/// 12, Theorem 7, by backwards analysis) is proved for a uniformly random order, which moving
-/// sites would spoil.
+/// The circle itself is unique. Which of several cocircular sites make up `support` is decided
+/// after the circle is found, by the same shuffle and the same three loops run on the sites of
+/// the circle alone, in input order: so the support depends on the sites, not on the order of
+/// the run, and Shamos's and Bhattacharya–Toussaint's algorithms (enclosing_circle_voronoi.hpp)
+/// give the same one. Welzl's move-to-front heuristic is not used: the expected O(n) bound
+/// (chapter 12, Theorem 7, by backwards analysis) is proved for a uniformly random order, which
+/// moving sites would spoil.
 
 #include <cstdint>
 #include <functional>
@@ -62,8 +65,9 @@ namespace t2 {
 /// The smallest enclosing circle of sites of T² (file comment).
 struct EnclosingCircle {
   using Index = std::uint32_t;  ///< site indices
-  /// The 1, 2 or 3 sites that define it, ascending: one site when all sites are equal (radius
-  /// zero), two ends of a diameter, or three sites on the circle that are not on one half of it.
+  /// The 1, 2 or 3 sites that define it, ascending: one site (or two equal ones) when all sites
+  /// are equal (radius zero), two ends of a diameter, or three sites on the circle that are not
+  /// on one half of it. Chosen among `on_circle` as the file comment says (Determinism).
   std::vector<Index> support;
   /// The centre [W, X, Y]: exact integers with no common factor, W ≠ 0 of the sites' sign.
   ExactPoint center{Integer(1), Integer(0), Integer(0)};
