@@ -100,7 +100,8 @@ DelaunayComplex delaunay_complex(std::span<const Point> points);
 
 /// The farthest-point Delaunay triangulation of front points in strictly convex position,
 /// given counter-clockwise: triangles (indices into `corners`) counter-clockwise, each circle
-/// holding every corner (inside or on). Lawson's flips from a fan (file comment).
+/// holding every corner (inside or on). Chew's randomized insertion (a fixed seed: the same
+/// output every run), expected O(h) time for h corners (chapter 11).
 std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<const Point> corners);
 
 }  // namespace t2
