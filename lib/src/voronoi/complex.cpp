@@ -117,13 +117,10 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
   out.dimension = 2;
 }
 
-}  // namespace
-
-namespace {
-
-/// A triangulated convex polygon being grown by Chew's insertions: faces counter-clockwise, the
-/// half-edge 3t + i of face t opposite its vertex i (from vertex i + 1 to vertex i + 2), its
-/// twin, or `none` on the polygon's boundary, where `hull` records it by its origin.
+//> farthest-fan
+/// A triangulated convex polygon grown by Chew's insertions: faces counter-clockwise,
+/// the half-edge 3t + i of face t opposite its vertex i (from vertex i + 1 to i + 2),
+/// its twin, or `none` on the polygon's boundary, where `hull` records it by its origin.
 struct Fan {
   std::span<const Point> P;
   std::vector<Face> f;
@@ -135,8 +132,8 @@ struct Fan {
     if (g == Triangulation::none) hull[origin(h)] = h;
     else twin[g] = h;
   }
-  /// Face h / 3 = (p, a, b), p at slot h % 3, is new; its edge a → b may be illegal. Flip while
-  /// the far corner's circle misses p: each flip puts p on one more face (expected O(1)).
+  /// Face h / 3 = (p, a, b), p at slot h % 3, is new; its edge a → b may be illegal.
+  /// Flip while the far corner's circle misses p: each flip gives p one more face.
   void legalize(Index h) {
     std::vector<Index> todo{h};
     while (!todo.empty()) {
@@ -148,8 +145,9 @@ struct Fan {
       const Index p = f[t][i], a = f[t][(i + 1) % 3], b = f[t][(i + 2) % 3], x = f[u][j];
       // Legal when the circle of u = (x, b, a) holds p, inside or on.
       if (in_circle(P[f[u][0]], P[f[u][1]], P[f[u][2]], P[p]) != NEGATIVE) continue;
-      const Index A1 = twin[3 * t + (i + 1) % 3], A2 = twin[3 * t + (i + 2) % 3];  // b → p, p → a
-      const Index B1 = twin[3 * u + (j + 1) % 3], B2 = twin[3 * u + (j + 2) % 3];  // a → x, x → b
+      // The twins of b → p, p → a (in t) and a → x, x → b (in u).
+      const Index A1 = twin[3 * t + (i + 1) % 3], A2 = twin[3 * t + (i + 2) % 3];
+      const Index B1 = twin[3 * u + (j + 1) % 3], B2 = twin[3 * u + (j + 2) % 3];
       f[t] = {p, a, x};  // the quadrilateral p a x b is strictly convex: the diagonal p x
       f[u] = {p, x, b};
       link(3 * t, B1), link(3 * t + 1, 3 * u + 2), link(3 * t + 2, A2);
@@ -157,16 +155,18 @@ struct Fan {
       todo.push_back(3 * t), todo.push_back(3 * u);  // a → x and x → b, opposite p
     }
   }
-  /// Corner p between the neighbours q → r of the polygon: the face (p, r, q) on the edge q → r.
+  /// Corner p between the neighbours q → r of the polygon: the face (p, r, q) on q → r.
   void insert(Index q, Index p, Index r) {
     const Index t = static_cast<Index>(f.size());
     f.push_back({p, r, q});
     twin.resize(3 * f.size());
     const Index e = hull[q];  // q → r
-    link(3 * t, e), link(3 * t + 1, Triangulation::none), link(3 * t + 2, Triangulation::none);
+    link(3 * t, e);
+    link(3 * t + 1, Triangulation::none), link(3 * t + 2, Triangulation::none);
     legalize(3 * t);
   }
 };
+//< farthest-fan
 
 /// splitmix64: a fixed stream, the same on every machine.
 std::uint64_t next_random(std::uint64_t& s) {
@@ -192,7 +192,7 @@ std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(
     const Index j = static_cast<Index>(next_random(seed) % (k + 1));  // Fisher-Yates
     std::swap(order[k], order[j]);
   }
-  std::vector<std::pair<Index, Index>> was(m);  // the neighbours of a corner when taken out
+  std::vector<std::pair<Index, Index>> was(m);  // a corner's neighbours when taken out
   for (Index k = 0; k + 3 < m; ++k) {
     const Index p = order[k];
     was[p] = {prev[p], next[p]};
@@ -203,8 +203,11 @@ std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(
   fan.f.push_back(Face{a, b, c});
   fan.hull[a] = 2, fan.hull[b] = 0, fan.hull[c] = 1;
   // Put them back in the reverse order: each between its two old neighbours, a new face
-  // (p, r, q) on the polygon edge q → r, then Lawson's flips around p.
-  for (Index k = m - 3; k-- > 0;) fan.insert(was[order[k]].first, order[k], was[order[k]].second);
+  // (p, r, q) on the polygon edge q → r, then the flips around p (Fan::legalize).
+  for (Index k = m - 3; k-- > 0;) {
+    const Index p = order[k];
+    fan.insert(was[p].first, p, was[p].second);
+  }
   return std::move(fan.f);
 }
 //< farthest-delaunay
