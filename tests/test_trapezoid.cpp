@@ -97,7 +97,7 @@ void expect_matches(const Subdivision& S, const std::vector<Point>& Q, std::set<
   for (const Point& p : Q) {
     const Location want = t2::locate_brute(S, p);
     ASSERT_EQ(to_string(L.locate(p)), to_string(want)) << "p = " << p.w() << " " << p.x() << " " << p.y();
-    ASSERT_EQ(to_string(t2::walk(S, p, 0)), to_string(want));
+    ASSERT_EQ(to_string(t2::walk(S, p, S.org(0))), to_string(want));  // from a vertex of a face
     if (seen) seen->insert(want.kind);
   }
 }
@@ -105,12 +105,12 @@ void expect_matches(const Subdivision& S, const std::vector<Point>& Q, std::set<
 TEST(TrapezoidLocator, MatchesBruteForceAndWalkOnDelaunayMaps) {
   std::mt19937_64 rng(6);
   std::set<Location::Kind> seen;
-  for (int round = 0; round < 8; ++round) {
-    const Subdivision S = delaunay_map(rng, 30 + 20 * round, 30, round % 2 ? 3 : 1);
+  for (int round = 0; round < 5; ++round) {
+    const Subdivision S = delaunay_map(rng, 20 + 12 * round, 30, round % 2 ? 3 : 1);
     const t2::TrapezoidLocator L(S);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::front), nullptr);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::back), nullptr);  // no edge there: closed, empty
-    expect_matches(S, queries(S, rng, 150, 33), &seen);
+    expect_matches(S, queries(S, rng, 100, 33), &seen);
   }
   EXPECT_EQ(seen.size(), 4u);
 }
@@ -118,25 +118,25 @@ TEST(TrapezoidLocator, MatchesBruteForceAndWalkOnDelaunayMaps) {
 TEST(TrapezoidLocator, MatchesOnGridsWithVerticalEdgesOnBothSides) {
   std::mt19937_64 rng(15);
   std::set<Location::Kind> seen;
-  for (int round = 0; round < 6; ++round) {
+  for (int round = 0; round < 5; ++round) {
     std::vector<Point> P;
     Faces F;
-    grid(rng, 3 + round, -3, -2, P, F);
+    grid(rng, 2 + round, -3, -2, P, F);
     if (round % 2) antipodes(P, F);                       // the same grid on the back as well
     if (round == 4) grid(rng, 2, 5 + round, 0, P, F);     // and a second one on the front
     const Subdivision S(P, F);
     const t2::TrapezoidLocator L(S);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::front), nullptr);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::back), nullptr);
-    expect_matches(S, queries(S, rng, 300, 10), &seen);
+    expect_matches(S, queries(S, rng, 150, 10), &seen);
   }
   EXPECT_EQ(seen.size(), 4u);
 }
 
 TEST(TrapezoidLocator, MatchesOnBackMaps) {
   std::mt19937_64 rng(16);
-  for (int round = 0; round < 4; ++round) {
-    const Subdivision D = delaunay_map(rng, 40, 12, 1 + round);
+  for (int round = 0; round < 3; ++round) {
+    const Subdivision D = delaunay_map(rng, 30, 12, 1 + round);
     std::vector<Point> P = D.points();
     Faces F;
     for (Index f = 0; f < D.faces(); ++f) F.push_back({D.org(D.first(f)), D.org(D.first(f) + 1), D.org(D.first(f) + 2)});
@@ -147,7 +147,7 @@ TEST(TrapezoidLocator, MatchesOnBackMaps) {
     for (auto& f : F)
       for (auto& v : f) v -= Index(n);
     const Subdivision S(P, F);
-    expect_matches(S, queries(S, rng, 200, 14));
+    expect_matches(S, queries(S, rng, 120, 14));
   }
 }
 
@@ -216,8 +216,12 @@ void expect_certified(const TrapezoidMap& M, const std::vector<Point>& P, const 
     const TrapezoidMap::Hit h = M.locate(p);
     if (h.kind != TrapezoidMap::Hit::Kind::trapezoid) continue;
     const auto& t = T[h.id];
-    if (t.leftp != TrapezoidMap::none) EXPECT_EQ(t2::compare_xy(P[t.leftp], p), t2::NEGATIVE);
-    if (t.rightp != TrapezoidMap::none) EXPECT_EQ(t2::compare_xy(p, P[t.rightp]), t2::NEGATIVE);
+    if (t.leftp != TrapezoidMap::none) {
+      EXPECT_EQ(t2::compare_xy(P[t.leftp], p), t2::NEGATIVE);
+    }
+    if (t.rightp != TrapezoidMap::none) {
+      EXPECT_EQ(t2::compare_xy(p, P[t.rightp]), t2::NEGATIVE);
+    }
     if (t.top != TrapezoidMap::none) {
       const auto [a, b] = M.segment(t.top);
       EXPECT_EQ(t2::orient(P[a], P[b], p), t2::NEGATIVE);

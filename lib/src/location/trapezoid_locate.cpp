@@ -65,7 +65,7 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
 //> trapezoid-answer
 Location TrapezoidLocator::locate(const Point& p) const {
   const int s = side_of(p);
-  if (s < 0 || !charts_[s].map) return S_.points().empty() ? Location{} : walk(S_, p, 0);
+  if (s < 0 || !charts_[s].map) return S_.half_edges() == 0 ? Location{} : walk(S_, p, S_.org(0));
   const Chart& c = charts_[s];
   const TrapezoidMap::Hit h = c.map->locate(s == front ? p : antipode(p));
   switch (h.kind) {

@@ -15,7 +15,7 @@
 /// `locate_brute` of a point of the side to the right of every vertex.
 ///
 /// **What the walk does.** A query on Ω, or on a side whose chart is not closed (an edge crosses
-/// Ω or ends on it while its other end is on the side), is answered by `walk` from vertex 0. The
+/// Ω or ends on it while its other end is on the side), is answered by `walk` from the first vertex of face 0. The
 /// answers are exactly those of `walk` and `locate_brute` (the least face for edges and vertices).
 
 #include <cstddef>
