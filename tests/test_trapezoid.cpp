@@ -6,6 +6,7 @@
 // the map's own certificates (neighbour links, the trapezoid of each query, size and depth).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -195,8 +196,8 @@ TEST(TrapezoidLocator, RejectsCrossingEdges) {
 }
 
 // The certificates of one map of n segments: every neighbour link is mutual and joins
-// trapezoids of the final map across one vertical line; at most 3n + 1 trapezoids (de Berg et
-// al., Lemma 6.2, with or without shared endpoints); each query's trapezoid holds it strictly.
+// trapezoids of the final map across one vertical line; 1 + n + V ≤ 3n + 1 trapezoids (de Berg
+// et al., Lemma 6.2, counted with shared endpoints); each query's trapezoid holds it strictly.
 void expect_certified(const TrapezoidMap& M, const std::vector<Point>& P, const std::vector<Point>& Q) {
   const auto& T = M.trapezoids();
   std::size_t live = 0;
@@ -211,6 +212,11 @@ void expect_certified(const TrapezoidMap& M, const std::vector<Point>& P, const 
         EXPECT_EQ(T[n].leftp, t.rightp);
       }
   }
+  // Exactly 1 + n + V, V the endpoints: one trapezoid unbounded to the left, and right of each
+  // endpoint v one more than the segments that start at v (chapter 14, Lemma 5).
+  std::set<Index> ends;
+  for (Index s = 0; s < M.segments(); ++s) ends.insert(M.segment(s).first), ends.insert(M.segment(s).second);
+  EXPECT_EQ(live, 1 + M.segments() + ends.size());
   EXPECT_LE(live, 3 * M.segments() + 1);
   for (const Point& p : Q) {
     const TrapezoidMap::Hit h = M.locate(p);
@@ -261,6 +267,7 @@ TEST(TrapezoidMap, SizeAndDepthAreWithinTheBounds) {
     for (Index h = 0; h < S.half_edges(); ++h)
       if (S.twin(h) == Subdivision::none || S.twin(h) > h) seg.push_back({S.org(h), S.dest(h)});
     const TrapezoidMap M(S.points(), seg, rng());
+    expect_certified(M, S.points(), {});
     const double m = double(seg.size());
     EXPECT_LE(double(M.nodes()), 20 * m);
     EXPECT_GE(M.nodes(), seg.size());  // not a tautology the other way: every segment has a y-node
@@ -269,9 +276,14 @@ TEST(TrapezoidMap, SizeAndDepthAreWithinTheBounds) {
     for (std::size_t i = 1; i <= seg.size(); ++i) H += 1.0 / double(i);
     std::uniform_real_distribution<double> d(-4000, 4000);
     double steps = 0;
+    std::size_t longest = 0;
     const int k = 2000;
-    for (int i = 0; i < k; ++i) steps += double(M.locate(Point::cartesian(d(rng), d(rng))).steps);
+    for (int i = 0; i < k; ++i) {
+      const std::size_t s = M.locate(Point::cartesian(d(rng), d(rng))).steps;
+      steps += double(s), longest = std::max(longest, s);
+    }
     EXPECT_LE(steps / k, 1 + 12 * H);
+    EXPECT_LE(longest, M.depth());  // depth() is the longest path of all
     RecordProperty("nodes_per_segment_" + std::to_string(n), std::to_string(double(M.nodes()) / m));
     RecordProperty("depth_" + std::to_string(n), std::to_string(M.depth()));
   }

@@ -190,13 +190,24 @@ TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
 }
 //< trapezoid-query
 
-// Children always have greater indices than their parents (a leaf turned inner node points to
-// nodes made after it), so one pass from the last node back computes the longest paths.
+// The longest path, by a depth-first search that finishes each node after its children (the
+// DAG shares nodes, so each is finished once and then read).
 std::size_t TrapezoidMap::depth() const {
-  std::vector<std::size_t> d(node_.size(), 1);
-  for (std::size_t n = node_.size(); n-- > 0;)
-    if (node_[n].kind != Node::leaf) d[n] = 1 + std::max(d[node_[n].left], d[node_[n].right]);
-  return d.empty() ? 0 : d[0];
+  std::vector<std::size_t> d(node_.size(), 0);
+  std::vector<Index> stack{0};
+  while (!stack.empty()) {
+    const Index n = stack.back();
+    const Node& v = node_[n];
+    if (v.kind != Node::leaf && d[v.left] == 0) {
+      stack.push_back(v.left);
+    } else if (v.kind != Node::leaf && d[v.right] == 0) {
+      stack.push_back(v.right);
+    } else {
+      d[n] = v.kind == Node::leaf ? 1 : 1 + std::max(d[v.left], d[v.right]);
+      stack.pop_back();
+    }
+  }
+  return d[0];
 }
 
 }  // namespace t2
