@@ -35,15 +35,17 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
       points.push_back(s == front ? P[v] : antipode(P[v]));
       c.vertex.push_back(v);
     }
-  // The point (M, 0) of the chart, right of every vertex: M a power of two, so M·w is exact.
+  // The point (M, 0) of the chart, right of every vertex: M a power of two, so M·w is
+  // exact.
   double M = 1;
   for (const Point& p : points)
     while (!(M * p.w() > p.x())) M *= 2;
   if (!std::isfinite(M)) return;  // no such double: the walk answers this side
   c.unbounded = locate_brute(S_, s == front ? Point(1, M, 0) : Point(-1, -M, 0));
-  // One segment per edge; the region on its upper side in the chart. The face of h is on the
-  // left of org → dest; on the back the antipode reverses orientations, so there it is on the
-  // right. Left of a segment running left to right (in the x-order) is its upper side.
+  // One segment per edge; the region on its upper side in the chart. The face of h is on
+  // the left of org → dest; on the back the antipode reverses orientations, so there it
+  // is on the right. Left of a segment running left to right (in the x-order) is its
+  // upper side.
   std::vector<std::pair<Index, Index>> segments;
   for (Index h = 0; h < S_.half_edges(); ++h) {
     const Index a = S_.org(h), b = S_.dest(h), t = S_.twin(h);
@@ -51,13 +53,17 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
     segments.push_back({id[a], id[b]});
     c.half_edge.push_back(h);
     const bool rightward = compare_xy(points[id[a]], points[id[b]]) == NEGATIVE;
-    const Index g = rightward == (s == front) ? h : t;  // the half-edge whose face is above
-    c.above.push_back(g == Subdivision::none ? Location{} : Location{Location::Kind::face, S_.face(g), 0});
+    const Index g =
+        rightward == (s == front) ? h : t;  // the half-edge whose face is above
+    c.above.push_back(g == Subdivision::none
+                          ? Location{}
+                          : Location{Location::Kind::face, S_.face(g), 0});
   }
   try {
     c.map.emplace(std::move(points), std::move(segments), seed);
   } catch (const SegmentError& e) {
-    throw MapError(S_.face(c.half_edge[e.segment()]), std::string("its edges and another face's: ") + e.what());
+    throw MapError(S_.face(c.half_edge[e.segment()]),
+                   std::string("its edges and another face's: ") + e.what());
   }
 }
 //< trapezoid-chart
@@ -65,13 +71,17 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
 //> trapezoid-answer
 Location TrapezoidLocator::locate(const Point& p) const {
   const int s = side_of(p);
-  if (s < 0 || !charts_[s].map) return S_.half_edges() == 0 ? Location{} : walk(S_, p, S_.org(0));
+  if (s < 0 || !charts_[s].map)
+    return S_.half_edges() == 0 ? Location{} : walk(S_, p, S_.org(0));
   const Chart& c = charts_[s];
   const TrapezoidMap::Hit h = c.map->locate(s == front ? p : antipode(p));
   switch (h.kind) {
-    case TrapezoidMap::Hit::Kind::point: return at_vertex(S_, c.vertex[h.id]);
-    case TrapezoidMap::Hit::Kind::segment: return at_edge(S_, c.half_edge[h.id]);
-    case TrapezoidMap::Hit::Kind::trapezoid: break;
+    case TrapezoidMap::Hit::Kind::point:
+      return at_vertex(S_, c.vertex[h.id]);
+    case TrapezoidMap::Hit::Kind::segment:
+      return at_edge(S_, c.half_edge[h.id]);
+    case TrapezoidMap::Hit::Kind::trapezoid:
+      break;
   }
   return h.below == TrapezoidMap::none ? c.unbounded : c.above[h.below];
 }

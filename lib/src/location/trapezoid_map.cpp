@@ -17,11 +17,13 @@ namespace t2 {
 
 using Index = TrapezoidMap::Index;
 
-TrapezoidMap::TrapezoidMap(std::vector<Point> points, std::vector<std::pair<Index, Index>> segments,
+TrapezoidMap::TrapezoidMap(std::vector<Point> points,
+                           std::vector<std::pair<Index, Index>> segments,
                            std::uint64_t seed)
     : P_(std::move(points)) {
   for (std::size_t i = 0; i < P_.size(); ++i)
-    if (!(P_[i].w() > 0)) throw BadInput(fmt::format("trapezoid map: point {} is not a front point", i));
+    if (!(P_[i].w() > 0))
+      throw BadInput(fmt::format("trapezoid map: point {} is not a front point", i));
   for (std::size_t i = 0; i < segments.size(); ++i) {
     auto [a, b] = segments[i];
     if (a >= P_.size() || b >= P_.size() || a == b)
@@ -45,9 +47,9 @@ Index TrapezoidMap::make(const Trapezoid& t) {
   return id;
 }
 
-// `right` is the neighbour of `left` across the part of its right side above its rightp, and
-// `left` that of `right` across the part of its left side above its leftp (the same point): the
-// two relations always hold together (either may be none).
+// `right` is the neighbour of `left` across the part of its right side above its rightp,
+// and `left` that of `right` across the part of its left side above its leftp (the same
+// point): the two relations always hold together (either may be none).
 void TrapezoidMap::link_upper(Index left, Index right) {
   if (left != none) trap_[left].ur = right;
   if (right != none) trap_[right].ul = left;
@@ -58,9 +60,10 @@ void TrapezoidMap::link_lower(Index left, Index right) {
 }
 
 //> trapezoid-locate-left
-// The trapezoid that segment s enters from its left endpoint p: the DAG descent for p, with the
-// ties that p itself causes broken as for a point of s just right of p (de Berg et al., §6.2):
-// at p's own x-node go right; at a segment t that starts at p, compare the other end q with t.
+// The trapezoid that segment s enters from its left endpoint p: the DAG descent for p,
+// with the ties that p itself causes broken as for a point of s just right of p (de Berg
+// et al., §6.2): at p's own x-node go right; at a segment t that starts at p, compare the
+// other end q with t.
 Index TrapezoidMap::locate_left(Index s) const {
   const Index p = seg_[s].a, q = seg_[s].b;
   Index n = 0;
@@ -74,7 +77,9 @@ Index TrapezoidMap::locate_left(Index s) const {
     const Seg& t = seg_[v.id];
     const Sign o = orient(P_[t.a], P_[t.b], P_[t.a == p ? q : p]);
     if (o == ZERO)
-      throw SegmentError(s, fmt::format("segments {} and {} overlap, or one ends inside the other", s, v.id));
+      throw SegmentError(
+          s, fmt::format("segments {} and {} overlap, or one ends inside the other", s,
+                         v.id));
     n = o == POSITIVE ? v.left : v.right;
   }
 }
@@ -89,25 +94,31 @@ Index TrapezoidMap::push(const Node& n) {
 void TrapezoidMap::insert(Index s) {
   const Index p = seg_[s].a, q = seg_[s].b;
   const Point &P = P_[p], &Q = P_[q];
-  // The trapezoids Δ0 … Δk that s crosses, left to right: across the right side of Δj at its
-  // point r, s goes on into the lower-right neighbour when r is above s, else the upper-right.
+  // The trapezoids Δ0 … Δk that s crosses, left to right: across the right side of Δj at
+  // its point r, s goes on into the lower-right neighbour when r is above s, else the
+  // upper-right.
   std::vector<Index> D{locate_left(s)};
   for (;;) {
     const Trapezoid& t = trap_[D.back()];
     if (t.rightp == none || compare_xy(P_[t.rightp], Q) != NEGATIVE) break;
     const Sign o = orient(P, Q, P_[t.rightp]);
-    if (o == ZERO) throw SegmentError(s, fmt::format("point {} lies inside segment {}", t.rightp, s));
+    if (o == ZERO)
+      throw SegmentError(s, fmt::format("point {} lies inside segment {}", t.rightp, s));
     D.push_back(o == POSITIVE ? t.lr : t.ur);
-    if (D.back() == none)  // impossible for valid input: s crosses a segment that ends at r
-      throw SegmentError(s, fmt::format("segment {} crosses another segment near point {}", s, t.rightp));
+    if (D.back() ==
+        none)  // impossible for valid input: s crosses a segment that ends at r
+      throw SegmentError(
+          s,
+          fmt::format("segment {} crosses another segment near point {}", s, t.rightp));
   }
   const Trapezoid d0 = trap_[D.front()], dk = trap_[D.back()];
-  for (const Index t : {dk.top, dk.bottom})  // a cheap check that s stays between them at q
+  for (const Index t :
+       {dk.top, dk.bottom})  // a cheap check that s stays between them at q
     if (t != none && seg_[t].a != q && seg_[t].b != q &&
         orient(P_[seg_[t].a], P_[seg_[t].b], Q) != (t == dk.top ? NEGATIVE : POSITIVE))
       throw SegmentError(s, fmt::format("segments {} and {} cross", s, t));
-  // Δ0 loses A, the part left of p (none when p is Δ0's own leftp); the part right of p is
-  // cut by s into an upper trapezoid U and a lower one L, which grow to the right.
+  // Δ0 loses A, the part left of p (none when p is Δ0's own leftp); the part right of p
+  // is cut by s into an upper trapezoid U and a lower one L, which grow to the right.
   Index A = none;
   if (d0.leftp != p) {
     A = make({d0.top, d0.bottom, d0.leftp, p});
@@ -148,8 +159,8 @@ void TrapezoidMap::insert(Index s) {
   }
   link_upper(B != none ? B : U, dk.ur);
   link_lower(B != none ? B : L, dk.lr);
-  // The DAG: the leaf of each Δj becomes the y-node of s over its two new trapezoids, under
-  // the x-nodes of p (Δ0, when A exists) and q (Δk, when B exists).
+  // The DAG: the leaf of each Δj becomes the y-node of s over its two new trapezoids,
+  // under the x-nodes of p (Δ0, when A exists) and q (Δk, when B exists).
   for (std::size_t j = 0; j < D.size(); ++j) {
     const Index leaf = trap_[D[j]].node;
     trap_[D[j]].node = none;
@@ -180,9 +191,11 @@ TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
     }
     const Seg& t = seg_[v.id];
     const Sign o = orient(P_[t.a], P_[t.b], p);
-    if (o == ZERO) {  // on the line of t, and in its x-range: inside t (its ends have x-nodes)
+    if (o ==
+        ZERO) {  // on the line of t, and in its x-range: inside t (its ends have x-nodes)
       if (compare_xy(P_[t.a], p) != NEGATIVE || compare_xy(p, P_[t.b]) != NEGATIVE)
-        throw std::logic_error("trapezoid map: a query on a segment's line out of its range");
+        throw std::logic_error(
+            "trapezoid map: a query on a segment's line out of its range");
       return {Hit::Kind::segment, v.id, none, h.steps};
     }
     n = o == POSITIVE ? v.left : v.right;
@@ -190,8 +203,8 @@ TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
 }
 //< trapezoid-query
 
-// The longest path, by a depth-first search that finishes each node after its children (the
-// DAG shares nodes, so each is finished once and then read).
+// The longest path, by a depth-first search that finishes each node after its children
+// (the DAG shares nodes, so each is finished once and then read).
 std::size_t TrapezoidMap::depth() const {
   std::vector<std::size_t> d(node_.size(), 0);
   std::vector<Index> stack{0};
