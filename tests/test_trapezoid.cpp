@@ -106,12 +106,12 @@ void expect_matches(const Subdivision& S, const std::vector<Point>& Q, std::set<
 TEST(TrapezoidLocator, MatchesBruteForceAndWalkOnDelaunayMaps) {
   std::mt19937_64 rng(6);
   std::set<Location::Kind> seen;
-  for (int round = 0; round < 5; ++round) {
-    const Subdivision S = delaunay_map(rng, 20 + 12 * round, 30, round % 2 ? 3 : 1);
+  for (int round = 0; round < 4; ++round) {
+    const Subdivision S = delaunay_map(rng, 20 + 10 * round, 30, round % 2 ? 3 : 1);
     const t2::TrapezoidLocator L(S);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::front), nullptr);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::back), nullptr);  // no edge there: closed, empty
-    expect_matches(S, queries(S, rng, 100, 33), &seen);
+    expect_matches(S, queries(S, rng, 80, 33), &seen);
   }
   EXPECT_EQ(seen.size(), 4u);
 }
@@ -119,12 +119,12 @@ TEST(TrapezoidLocator, MatchesBruteForceAndWalkOnDelaunayMaps) {
 TEST(TrapezoidLocator, MatchesOnGridsWithVerticalEdgesOnBothSides) {
   std::mt19937_64 rng(15);
   std::set<Location::Kind> seen;
-  for (int round = 0; round < 5; ++round) {
+  for (int round = 0; round < 4; ++round) {
     std::vector<Point> P;
     Faces F;
     grid(rng, 2 + round, -3, -2, P, F);
     if (round % 2) antipodes(P, F);                       // the same grid on the back as well
-    if (round == 4) grid(rng, 2, 5 + round, 0, P, F);     // and a second one on the front
+    if (round == 2) grid(rng, 2, 5 + round, 0, P, F);     // and a second one on the front
     const Subdivision S(P, F);
     const t2::TrapezoidLocator L(S);
     ASSERT_NE(L.chart(t2::TrapezoidLocator::front), nullptr);
