@@ -15,8 +15,9 @@
 // PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
 // delaunay, triangulation, hull3d, ...) and an implementation of it: a t2 algorithm registered
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
-// cgal (hull, delaunay, hull3d, intersect, locate, sec), qhull (hull, hull3d), nanoflann and
-// rtree (range: range_peers.hpp), boost (voronoi-front: Boost.Polygon's sweep), raw and exact
+// cgal (hull, delaunay, hull3d, intersect, locate, locate-build, sec), qhull (hull, hull3d),
+// nanoflann and rtree (range: range_peers.hpp), boost (voronoi-front: Boost.Polygon's sweep),
+// raw and exact
 // (hull, delaunay: t2's own code on plain double predicates, inexact, or on exact arithmetic at
 // every call, no filter).
 // A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
@@ -277,6 +278,17 @@ Run locate_peer(const std::string& impl, const std::vector<t2::Point>& P) {
   };
 }
 
+// CGAL's preprocessing for locate: Delaunay_triangulation_2<Epick> of the points, its number of
+// finite faces (t2's locate-build counts the faces of its map, the same triangles).
+Run locate_build_peer(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "cgal") return nullptr;
+  auto C = std::make_shared<std::vector<Epick::Point_2>>(t2bench::to_cgal(P));
+  return [C] {
+    CGAL::Delaunay_triangulation_2<Epick> dt(C->begin(), C->end());
+    return static_cast<std::size_t>(dt.number_of_faces());
+  };
+}
+
 // CGAL's Min_circle_2 on the exact kernel (Epeck: its circumcentres are constructed exactly),
 // randomized (its own shuffle, CGAL's default random): the number of support points.
 Run sec_peer(const std::string& impl, const std::vector<t2::Point>& P) {
@@ -321,6 +333,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "hull3d"   ? hull3d_peer(impl, in.points3)
           : problem == "intersect" ? intersect_peer(impl, in.segments)
           : problem == "locate"   ? locate_peer(impl, in.points)
+          : problem == "locate-build" ? locate_build_peer(impl, in.points)
           : problem == "sec"      ? sec_peer(impl, in.points)
           : problem == "range"    ? t2bench::range_peer(impl, in.points)
           : problem == "voronoi-front" ? voronoi_peer(impl, in.points)

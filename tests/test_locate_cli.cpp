@@ -1,5 +1,5 @@
 // t2 locate from the command line: a map with a face on Ω and one that crosses Ω, queries in
-// faces, on edges, on vertices, on Ω and on the back, both algorithms, and bad maps.
+// faces, on edges, on vertices, on Ω and on the back, the three algorithms, and bad maps.
 #include "cli_testing.hpp"
 
 namespace t2::testing {
@@ -32,7 +32,7 @@ TEST_F(LocateCli, FacesEdgesVerticesOmegaAndTheBack) {
         "0 -1 0\n");   // Ω: u + v, inside face 2's edge v → u
   const std::string want =
       "face 0\nface 1\nedge 0 0\nvertex 0 1\nedge 0 1\nedge 1 2\nface 2\nvertex 2 0\noutside\noutside\nedge 2 2\n";
-  for (const char* a : {"walk", "brute"}) {
+  for (const char* a : {"walk", "trapezoid", "brute"}) {
     const Result r = t2(std::string("locate map.t2 q.t2 --algorithm ") + a);
     EXPECT_EQ(r.status, 0) << a << r.err;
     EXPECT_EQ(r.out, want) << a;
@@ -40,6 +40,30 @@ TEST_F(LocateCli, FacesEdgesVerticesOmegaAndTheBack) {
   const Result r = t2("locate map.t2 q.t2 --svg out.svg");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(has(slurp(dir_ / "out.svg"), "<svg"));
+}
+
+// Two front squares (a vertical edge shared, a column of vertices at x = 2) and a back
+// triangle: both charts are closed, so the trapezoidal maps answer all but the Ω query.
+TEST_F(LocateCli, TrapezoidAnswersAsTheWalkOnBothSides) {
+  write("map.t2",
+        "polygon\n 0 0\n 2 0\n 2 2\n 0 2\nend\n"
+        "polygon\n 2 0\n 4 0\n 4 2\n 2 2\nend\n"
+        "polygon\n -1 0 0\n -1 0 -1\n -1 -1 0\nend\n");  // drawn at (0, 0), (0, 1), (1, 0)
+  write("q.t2", "1 1\n2 1\n2 2\n2 3\n3 1\n4 1\n5 1\n2 -1\n-2 -1 0\n-4 -1 -1\n-1 0 0\n-1 -1 -1\n0 1 0\n");
+  const std::string want =
+      "face 0\nedge 0 1\nvertex 0 2\noutside\nface 1\nedge 1 1\noutside\noutside\n"
+      "edge 2 2\nface 2\nvertex 2 0\noutside\noutside\n";
+  for (const char* a : {"walk", "trapezoid", "brute"}) {
+    const Result r = t2(std::string("locate map.t2 q.t2 --algorithm ") + a);
+    EXPECT_EQ(r.status, 0) << a << r.err;
+    EXPECT_EQ(r.out, want) << a;
+  }
+  // Two faces whose edges cross with no vertex in common: the walk takes the map (the
+  // subdivision does not test it), the trapezoidal map refuses it.
+  write("cross.t2", "polygon\n 0 0\n 4 0\n 0 4\nend\npolygon\n 2 -1\n 5 -2\n 6 3\nend\n");
+  const Result r = t2("locate cross.t2 q.t2 --algorithm trapezoid");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "cross.t2:")) << r.err;
 }
 
 TEST_F(LocateCli, BadMapsExitTwoWithTheLineOfTheFace) {

@@ -2,8 +2,11 @@
 #include "figures.hpp"
 
 #include <t2/draw.hpp>
+#include <t2/location/trapezoid_locate.hpp>
 #include <t2/location/walk.hpp>
+#include <t2/triangulation/delaunay.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -70,6 +73,48 @@ dr::Figure walk_picture(const Point& q, const Point& p) {
   return f;
 }
 
+// The trapezoidal map of the front chart of a small Delaunay map, each trapezoid filled, cut
+// to the square |x|, |y| ≤ 2.5 (drawing only: the corners are computed in floating point).
+dr::Figure trapezoid_picture() {
+  const std::vector<Point> P{Point::cartesian(-1.9, -0.8), Point::cartesian(-0.7, -1.6),
+                             Point::cartesian(0.6, -1.1),  Point::cartesian(1.7, -0.2),
+                             Point::cartesian(1.1, 1.3),   Point::cartesian(-0.4, 0.9),
+                             Point::cartesian(-1.3, 1.8),  Point::cartesian(0.2, -0.1)};
+  std::vector<std::vector<Index>> F;
+  for (const auto& t : t2::delaunay(P).finite_triangles()) F.push_back({t[0], t[1], t[2]});
+  const Subdivision S(P, F);
+  const t2::TrapezoidLocator L(S, 5);
+  const t2::TrapezoidMap& M = *L.chart(t2::TrapezoidLocator::front);
+  const auto& Q = S.points();  // the chart's points are the front vertices, in order
+  const double B = 2.5;
+  const auto y_at = [&](Index s, double x) {
+    const auto [a, b] = M.segment(s);
+    return Q[a].y() + (Q[b].y() - Q[a].y()) * (x - Q[a].x()) / (Q[b].x() - Q[a].x());
+  };
+  dr::Figure f;
+  const char* const fill[] = {pal::blue, pal::green, pal::orange, pal::purple, pal::cyan};
+  std::size_t k = 0;
+  for (const auto& t : M.trapezoids()) {
+    if (t.node == t2::TrapezoidMap::none) continue;
+    const double x0 = t.leftp == t2::TrapezoidMap::none ? -B : Q[t.leftp].x();
+    const double x1 = t.rightp == t2::TrapezoidMap::none ? B : Q[t.rightp].x();
+    const auto top = [&](double x) { return t.top == t2::TrapezoidMap::none ? B : y_at(t.top, x); };
+    const auto bot = [&](double x) { return t.bottom == t2::TrapezoidMap::none ? -B : y_at(t.bottom, x); };
+    t2::Polygon g;
+    for (const auto& [x, y] : {std::pair{x0, bot(x0)}, {x1, bot(x1)}, {x1, top(x1)}, {x0, top(x0)}})
+      if (g.empty() || (g.back() != Point::cartesian(x, y) && g.front() != Point::cartesian(x, y)))
+        g.push_back(Point::cartesian(x, y));
+    if (g.size() >= 3)
+      f.add(g, dr::Style().color(pal::grey).width(0.6).fill(fill[k++ % 5]).fill_opacity(0.25));
+  }
+  for (Index s = 0; s < M.segments(); ++s) {
+    const auto [a, b] = M.segment(s);
+    f.segment(Q[a], Q[b], dr::Style().color(pal::dark_grey).width(1.6));
+  }
+  for (const Point& p : P) f.add(p, dr::Style().size(2.5));
+  return f;
+}
+
 }  // namespace
 
 void figures(const std::filesystem::path& dir) {
@@ -104,6 +149,14 @@ void figures(const std::filesystem::path& dir) {
     near.lat = 75;
     near.lon = -90;
     out.save(f, "comb", wide, near);
+  }
+  {  // The trapezoidal map of a small Delaunay map's edges (sections 8-11).
+    dr::PlaneView tight;
+    tight.half_width = 2.6;
+    dr::SphereView above;
+    above.lat = 65;
+    above.lon = 20;
+    out.save(trapezoid_picture(), "trapezoids", tight, above);
   }
   std::cerr << out.summary() << "\n";
 }

@@ -1,13 +1,16 @@
 // Chapter 14: point location in a subdivision of T². The half-edge structure of a map whose
 // faces cross Ω, the walk of seed 000's Algorithm 15 with the regions it crosses, its degenerate
-// cases, and the walk checked against testing every face; the figures in both models
-// (figures.cpp).
+// cases, and the walk checked against testing every face; the trapezoidal maps, their answers and
+// their sizes; the figures in both models (figures.cpp).
 #include <t2/draw.hpp>
 #include <t2/kernel/point_in_polygon.hpp>
+#include <t2/location/trapezoid_locate.hpp>
 #include <t2/location/walk.hpp>
+#include <t2/triangulation/delaunay.hpp>
 #include <t2/t2.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -162,6 +165,67 @@ void random_check() {
   require(agree == total && overlaps == 0, "random queries");
 }
 
+// The number of trapezoids of the final map.
+std::size_t live(const t2::TrapezoidMap& M) {
+  std::size_t n = 0;
+  for (const auto& t : M.trapezoids()) n += t.node != t2::TrapezoidMap::none;
+  return n;
+}
+
+// Two squares on the front (a vertical edge shared, vertices in a column at x = 2) and a
+// triangle on the back: both charts closed; the trapezoidal maps against the walk.
+void trapezoids() {
+  std::cout << "== the trapezoidal maps\n";
+  //> trapezoid-demo
+  const auto at = [](double x, double y) { return Point::cartesian(x, y); };
+  const std::vector<t2::Polygon> F{
+      {at(0, 0), at(2, 0), at(2, 2), at(0, 2)},                    // F0
+      {at(2, 0), at(4, 0), at(4, 2), at(2, 2)},                    // F1
+      {Point(-1, 0, 0), Point(-1, 0, -1), Point(-1, -1, 0)}};      // F2, on the back
+  const Subdivision S(F);
+  const t2::TrapezoidLocator L(S);
+  for (const auto side : {t2::TrapezoidLocator::front, t2::TrapezoidLocator::back}) {
+    const t2::TrapezoidMap& M = *L.chart(side);
+    std::cout << (side == t2::TrapezoidLocator::front ? "front" : "back") << ": "
+              << M.segments() << " segments, " << live(M) << " trapezoids, "
+              << M.nodes() << " DAG nodes, depth " << M.depth() << "\n";
+  }
+  const Point Q[] = {at(1, 1), at(2, 1), at(2, 2), at(2, 3), at(3, 1),
+                     Point(-4, -1, -1), Point(-2, -1, 0), Point(0, 1, 0)};
+  for (const Point& p : Q) {
+    const Location l = L.locate(p);
+    std::cout << t2::to_string(p) << ": " << t2::to_string(l) << "\n";
+    require(l == t2::walk(S, p, 0), "the trapezoidal maps answer as the walk");
+  }
+  //< trapezoid-demo
+  std::cout << "\n";
+}
+
+// The size and the paths of the DAG on Delaunay maps of random points (measured, one order).
+void trapezoid_sizes() {
+  std::cout << "== the DAG on Delaunay maps (one random order each)\n";
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> d(0, 1);
+  for (const int n : {1000, 10000, 100000}) {
+    std::vector<Point> P;
+    for (int i = 0; i < n; ++i) P.push_back(Point::cartesian(d(rng), d(rng)));
+    std::vector<std::vector<Index>> F;
+    for (const auto& t : t2::delaunay(P).finite_triangles()) F.push_back({t[0], t[1], t[2]});
+    const Subdivision S(P, F);
+    const t2::TrapezoidLocator L(S);
+    const t2::TrapezoidMap& M = *L.chart(t2::TrapezoidLocator::front);
+    double steps = 0, H = 0;
+    for (int i = 0; i < 10000; ++i) steps += double(M.locate(Point::cartesian(d(rng), d(rng))).steps);
+    for (std::size_t i = 1; i <= M.segments(); ++i) H += 1.0 / double(i);
+    std::cout << "n = " << M.segments() << " segments: " << double(M.nodes()) / double(M.segments())
+              << " nodes per segment, " << double(live(M)) / double(M.segments())
+              << " trapezoids per segment, depth " << M.depth() << ", mean path " << steps / 10000
+              << " (1 + 12 H_n = " << 1 + 12 * H << ")\n";
+    require(double(M.nodes()) <= 20.0 * double(M.segments()) && steps / 10000 <= 1 + 12 * H, "DAG bounds");
+  }
+  std::cout << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -172,5 +236,7 @@ int main(int argc, char** argv) {
   t_junction();
   comb();
   random_check();
+  trapezoids();
+  trapezoid_sizes();
   chapter14::figures(dir);
 }

@@ -1,6 +1,6 @@
 // t2 locate: where each point of a scene lies in a subdivision of T² whose faces are the
-// polygons of another scene (t2/location/: the walk of seed 000's Algorithm 15, or every face
-// tested).
+// polygons of another scene (t2/location/: the walk of seed 000's Algorithm 15, the trapezoidal
+// maps of trapezoid_locate.hpp, or every face tested).
 #include <fmt/format.h>
 
 #include <memory>
@@ -12,6 +12,7 @@
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
 #include "t2/kernel/scene.hpp"
+#include "t2/location/trapezoid_locate.hpp"
 #include "t2/location/walk.hpp"
 
 namespace t2cli {
@@ -44,8 +45,18 @@ int locate(const Options& o) {
   std::string out;
   t2::Scene answer;
   t2::Subdivision::Index from = 0;
+  std::optional<t2::TrapezoidLocator> trapezoids;
+  if (o.algorithm == "trapezoid") {
+    try {
+      trapezoids.emplace(S);
+    } catch (const t2::MapError& e) {
+      throw t2::ParseError(map.name, map.polygons[e.face()].line, fmt::format("face {}: {}", e.face(), e.what()));
+    }
+  }
   for (const auto& p : Q) {
-    const t2::Location l = o.algorithm == "brute" ? t2::locate_brute(S, p) : t2::walk(S, p, from);
+    const t2::Location l = o.algorithm == "brute"       ? t2::locate_brute(S, p)
+                           : o.algorithm == "trapezoid" ? trapezoids->locate(p)
+                                                        : t2::walk(S, p, from);
     out += t2::to_string(l) + "\n";
     answer.points.push_back(scene_point(p, style_of(l.kind == t2::Location::Kind::outside ? "color=grey"
                                                                                           : "color=red")));
@@ -70,13 +81,16 @@ Action setup(Arguments& app) {
   app.add_option("QUERIES", o->queries, "the scene file of the query points")->required();
   app.add_option("--algorithm", o->algorithm,
                  "walk (default: seed 000's Algorithm 15, from vertex 0 along the segment to\n"
-                 "the query) or brute (every face tested in order)")
+                 "the query), trapezoid (a trapezoidal map with its history DAG per side of\n"
+                 "T2, built once; the walk for queries on Omega and on a side that an edge\n"
+                 "leaves) or brute (every face tested in order)")
       ->type_name("A")
-      ->check(IsMember({"walk", "brute"}));
+      ->check(IsMember({"walk", "trapezoid", "brute"}));
   add_drawing_options(app, o->drawing, "the map and the queries");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong, a face that is\n"
-      "not simple or that overlaps another at a vertex or along an edge).");
+      "not simple or that overlaps another at a vertex or along an edge; with trapezoid,\n"
+      "also edges of a side that cross, or a vertex inside another face's edge).");
   return [o] { return locate(*o); };
 }
 

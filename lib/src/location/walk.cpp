@@ -24,9 +24,6 @@ std::string to_string(const Location& l) {
   return "outside";
 }
 
-namespace {
-
-// The answers with the face of least index (walk.hpp's Location).
 Location at_vertex(const Subdivision& S, Index v) {
   Location l{Location::Kind::vertex, Subdivision::outside, 0};
   for (const auto& c : S.corners(v))
@@ -38,6 +35,8 @@ Location at_edge(const Subdivision& S, Index h) {
   if (t != Subdivision::none && S.face(t) < S.face(h)) h = t;
   return {Location::Kind::edge, S.face(h), S.slot(h)};
 }
+
+namespace {
 
 // A point Y of the segment qp, given by a line a ∨ b through it that is not q ∨ p: Y is
 // (a ∨ b) ∧ (q ∨ p) = α q + β p with (α, β) = s·(D_p, −D_q), D_x = det(a, b, x), α, β ≥ 0.

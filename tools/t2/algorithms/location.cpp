@@ -2,7 +2,10 @@
 // 000's Algorithm 15 on the Delaunay triangulation of the input points, each query starting at
 // the last query found inside a face (before there is one, at a vertex of the last answer's
 // face). The triangulation and the queries are made before the clock starts (the worker's peers
-// get the same queries: locate_queries).
+// get the same queries: locate_queries). The trapezoidal maps of trapezoid_locate.hpp answer the
+// same queries with their structure built before the clock; `locate-build` times what each
+// method builds from the points: the Delaunay triangulation and the half-edges (walk-build),
+// and the trapezoidal maps on top (trapezoid-build); CGAL's is its triangulation.
 #include "algorithms/location.hpp"
 
 #include <algorithm>
@@ -10,6 +13,7 @@
 #include <random>
 
 #include "algorithms/registry.hpp"
+#include "t2/location/trapezoid_locate.hpp"
 #include "t2/location/walk.hpp"
 #include "t2/triangulation/delaunay.hpp"
 #include "t2/triangulation/spatial_sort.hpp"
@@ -44,13 +48,19 @@ std::vector<t2::Point> locate_queries(std::span<const t2::Point> points, bool so
 namespace {
 
 T2_PROBLEM({"locate", "queries in a face", Input::plane});
+T2_PROBLEM({"locate-build", "faces", Input::plane});
+
+// The map of the bench: the Delaunay triangles of the points.
+std::shared_ptr<const t2::Subdivision> delaunay_map(const std::vector<t2::Point>& points) {
+  const t2::Triangulation T = t2::delaunay(points);
+  std::vector<std::vector<t2::Subdivision::Index>> F;
+  for (const auto& t : T.finite_triangles()) F.push_back({t[0], t[1], t[2]});
+  return std::make_shared<const t2::Subdivision>(points, F);
+}
 
 // The timed run: every query walked, from the last query inside a face.
 Timed walk_run(BenchInput& in, bool sorted) {
-  const t2::Triangulation T = t2::delaunay(in.points);
-  std::vector<std::vector<t2::Subdivision::Index>> F;
-  for (const auto& t : T.finite_triangles()) F.push_back({t[0], t[1], t[2]});
-  auto S = std::make_shared<const t2::Subdivision>(in.points, F);
+  auto S = delaunay_map(in.points);
   auto Q = std::make_shared<const std::vector<t2::Point>>(locate_queries(in.points, sorted));
   return [S, Q] {
     std::size_t inside = 0;
@@ -74,6 +84,47 @@ T2_ALGORITHM({.name = "walk",
               .title = "point location by walking (Algorithm 15)",
               .time = [](BenchInput& in) -> Timed { return walk_run(in, false); },
               .peers = {"cgal", "walk-sorted", "cgal-sorted"}});
+
+// The timed run: every query answered by the trapezoidal maps (built before the clock).
+Timed trapezoid_run(BenchInput& in) {
+  auto S = delaunay_map(in.points);
+  auto L = std::make_shared<const t2::TrapezoidLocator>(*S);
+  auto Q = std::make_shared<const std::vector<t2::Point>>(locate_queries(in.points, false));
+  return [S, L, Q] {
+    std::size_t inside = 0;
+    for (const auto& q : *Q) inside += L->locate(q).kind != t2::Location::Kind::outside;
+    return inside;
+  };
+}
+
+T2_ALGORITHM({.name = "trapezoid",
+              .problem = "locate",
+              .summary = "t2::TrapezoidLocator: the trapezoidal map and its history DAG (randomized incremental) "
+                         "on the Delaunay triangulation, queries in random order",
+              .title = "point location by a trapezoidal map",
+              .time = [](BenchInput& in) -> Timed { return trapezoid_run(in); },
+              .peers = {"walk", "cgal"}});
+
+T2_ALGORITHM({.name = "walk-build",
+              .problem = "locate-build",
+              .summary = "what the walk needs: t2::delaunay of the points and the t2::Subdivision of its triangles",
+              .title = "the walk's preprocessing",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] { return delaunay_map(P)->faces(); };
+              }});
+
+T2_ALGORITHM({.name = "trapezoid-build",
+              .problem = "locate-build",
+              .summary = "walk-build, then t2::TrapezoidLocator's trapezoidal maps on the triangles",
+              .title = "the trapezoidal map's preprocessing",
+              .time = [](BenchInput& in) -> Timed {
+                return [&P = in.points] {
+                  const auto S = delaunay_map(P);
+                  const t2::TrapezoidLocator L(*S);
+                  return S->faces();
+                };
+              },
+              .peers = {"walk-build", "cgal"}});
 
 T2_ALGORITHM({.name = "walk-sorted",
               .problem = "locate",

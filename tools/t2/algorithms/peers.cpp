@@ -7,9 +7,9 @@
 namespace t2cli::algorithms {
 namespace {
 
-T2_PEER({"cgal", {"hull", "delaunay", "hull3d", "intersect", "locate", "sec"},
-         "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay; its locate from the last "
-         "face, for locate), convex_hull_3 (hull3d), compute_intersection_points<Epeck> (intersect), "
+T2_PEER({"cgal", {"hull", "delaunay", "hull3d", "intersect", "locate", "locate-build", "sec"},
+         "CGAL: ch_akl_toussaint (hull), Delaunay_triangulation_2<Epick> (delaunay and locate-build; its locate "
+         "from the last face, for locate), convex_hull_3 (hull3d), compute_intersection_points<Epeck> (intersect), "
          "Min_circle_2<Epeck> shuffled (sec)",
          true});
 T2_PEER({"cgal-sorted", {"locate"},

@@ -58,6 +58,17 @@ struct Location {
 /// The answer written as `t2 locate` prints it: `face F`, `edge F K`, `vertex F K` or `outside`.
 std::string to_string(const Location& l);
 
+/// The answer for a point equal to vertex v of S: `vertex F k`, F the least face at v.
+/// @param S the subdivision
+/// @param v the vertex (an index into S.points())
+Location at_vertex(const Subdivision& S, Subdivision::Index v);
+
+/// The answer for a point inside the edge of half-edge h: `edge F k`, F the lesser of the
+/// faces of h and of its twin.
+/// @param S the subdivision
+/// @param h the half-edge
+Location at_edge(const Subdivision& S, Subdivision::Index h);
+
 /// Locates p by walking from vertex q (an index into S.points()) along the segment qp; when
 /// p = ¬q it starts from a neighbour of q instead. Appends to `crossed`, when given, each region
 /// the walk passes through, in order (`Subdivision::outside` for the complement). Exact. The
