@@ -15,8 +15,9 @@
 // PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
 // delaunay, triangulation, hull3d, ...) and an implementation of it: a t2 algorithm registered
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
-// cgal (hull, delaunay, hull3d, intersect, locate, locate-build, sec), qhull (hull, hull3d), nanoflann and
-// rtree (range: range_peers.hpp), raw and exact
+// cgal (hull, delaunay, hull3d, intersect, locate, locate-build, sec), qhull (hull, hull3d),
+// nanoflann and rtree (range: range_peers.hpp), boost (voronoi-front: Boost.Polygon's sweep),
+// raw and exact
 // (hull, delaunay: t2's own code on plain double predicates, inexact, or on exact arithmetic at
 // every call, no filter).
 // A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
@@ -28,6 +29,7 @@
 #include <sys/resource.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <boost/polygon/voronoi.hpp>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Min_circle_2.h>
@@ -301,6 +303,24 @@ Run sec_peer(const std::string& impl, const std::vector<t2::Point>& P) {
   };
 }
 
+// Boost.Polygon's sweep (construct_voronoi), which takes 32-bit integer points only: the
+// doubles rounded to the grid 2^-24 (inputs within [-64, 64), as `t2 gen` makes them; not
+// timed). Its vertex count is the front vertices' of the rounded points, so it need not equal
+// Fortune's (Peer::exact is false).
+Run voronoi_peer(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "boost") return nullptr;
+  auto B = std::make_shared<std::vector<boost::polygon::point_data<int>>>();
+  B->reserve(P.size());
+  for (const auto& p : P)  // w = 1 (make_input)
+    B->emplace_back(static_cast<int>(std::lround(std::ldexp(p.x(), 24))),
+                    static_cast<int>(std::lround(std::ldexp(p.y(), 24))));
+  return [B] {
+    boost::polygon::voronoi_diagram<double> vd;
+    boost::polygon::construct_voronoi(B->begin(), B->end(), &vd);
+    return vd.num_vertices();
+  };
+}
+
 // The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
 Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
   namespace reg = t2cli::algorithms;
@@ -316,6 +336,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "locate-build" ? locate_build_peer(impl, in.points)
           : problem == "sec"      ? sec_peer(impl, in.points)
           : problem == "range"    ? t2bench::range_peer(impl, in.points)
+          : problem == "voronoi-front" ? voronoi_peer(impl, in.points)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;

@@ -117,35 +117,98 @@ void front_complex(std::span<const Point> pts, DelaunayComplex& out) {
   out.dimension = 2;
 }
 
+//> farthest-fan
+/// A triangulated convex polygon grown by Chew's insertions: faces counter-clockwise,
+/// the half-edge 3t + i of face t opposite its vertex i (from vertex i + 1 to i + 2),
+/// its twin, or `none` on the polygon's boundary, where `hull` records it by its origin.
+struct Fan {
+  std::span<const Point> P;
+  std::vector<Face> f;
+  std::vector<Index> twin, hull;
+
+  Index origin(Index h) const { return f[h / 3][(h + 1) % 3]; }
+  void link(Index h, Index g) {
+    twin[h] = g;
+    if (g == Triangulation::none) hull[origin(h)] = h;
+    else twin[g] = h;
+  }
+  /// Face h / 3 = (p, a, b), p at slot h % 3, is new; its edge a → b may be illegal.
+  /// Flip while the far corner's circle misses p: each flip gives p one more face.
+  void legalize(Index h) {
+    std::vector<Index> todo{h};
+    while (!todo.empty()) {
+      h = todo.back();
+      todo.pop_back();
+      const Index e = twin[h];
+      if (e == Triangulation::none) continue;  // a boundary edge stays
+      const Index t = h / 3, u = e / 3, i = h % 3, j = e % 3;
+      const Index p = f[t][i], a = f[t][(i + 1) % 3], b = f[t][(i + 2) % 3], x = f[u][j];
+      // Legal when the circle of u = (x, b, a) holds p, inside or on.
+      if (in_circle(P[f[u][0]], P[f[u][1]], P[f[u][2]], P[p]) != NEGATIVE) continue;
+      // The twins of b → p, p → a (in t) and a → x, x → b (in u).
+      const Index A1 = twin[3 * t + (i + 1) % 3], A2 = twin[3 * t + (i + 2) % 3];
+      const Index B1 = twin[3 * u + (j + 1) % 3], B2 = twin[3 * u + (j + 2) % 3];
+      f[t] = {p, a, x};  // the quadrilateral p a x b is strictly convex: the diagonal p x
+      f[u] = {p, x, b};
+      link(3 * t, B1), link(3 * t + 1, 3 * u + 2), link(3 * t + 2, A2);
+      link(3 * u, B2), link(3 * u + 1, A1);
+      todo.push_back(3 * t), todo.push_back(3 * u);  // a → x and x → b, opposite p
+    }
+  }
+  /// Corner p between the neighbours q → r of the polygon: the face (p, r, q) on q → r.
+  void insert(Index q, Index p, Index r) {
+    const Index t = static_cast<Index>(f.size());
+    f.push_back({p, r, q});
+    twin.resize(3 * f.size());
+    const Index e = hull[q];  // q → r
+    link(3 * t, e);
+    link(3 * t + 1, Triangulation::none), link(3 * t + 2, Triangulation::none);
+    legalize(3 * t);
+  }
+};
+//< farthest-fan
+
+/// splitmix64: a fixed stream, the same on every machine.
+std::uint64_t next_random(std::uint64_t& s) {
+  std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 }  // namespace
 
 //> farthest-delaunay
 std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(
     std::span<const Point> corners) {
   const Index m = static_cast<Index>(corners.size());
-  std::vector<Face> fan;
-  for (Index i = 1; i + 1 < m; ++i) fan.push_back({0, i, i + 1});
-  if (m < 4) return fan;
-  for (Index i = 0; i < m; ++i) fan.push_back({(i + 1) % m, i, Triangulation::infinite});
-  Triangulation tr(std::vector<Point>(corners.begin(), corners.end()));
-  tr.assemble(fan);
-  std::vector<Index> stack;  // half-edges that may be illegal
-  for (Index e = 0; e < 3 * tr.size(); ++e) stack.push_back(e);
-  while (!stack.empty()) {
-    const Index t = stack.back() / 3;
-    const int i = static_cast<int>(stack.back() % 3);
-    stack.pop_back();
-    const Index e = tr.twin(t, i), u = e / 3;
-    if (tr.is_infinite(t) || tr.is_infinite(u)) continue;  // hull edges stay
-    const Point& d = tr.point(tr.vertex(u, static_cast<int>(e % 3)));
-    // Legal when the circle of t holds d (inside or on): every circle must hold every
-    // corner.
-    const Point &a = tr.point(tr.vertex(t, 0)), &b = tr.point(tr.vertex(t, 1));
-    if (in_circle(a, b, tr.point(tr.vertex(t, 2)), d) != NEGATIVE) continue;
-    tr.flip(t, i);  // strictly convex: the corners are in strictly convex position
-    stack.insert(stack.end(), {3 * t, 3 * t + 2, 3 * u, 3 * u + 1});
+  if (m < 3) return {};
+  // Chew: take the corners out of the polygon in a random order (a fixed seed), each
+  // remembering its two neighbours at that moment; the last three make a triangle.
+  std::vector<Index> order(m), prev(m), next(m);
+  std::uint64_t seed = 0xfa27'4e57;
+  for (Index k = 0; k < m; ++k) {
+    order[k] = k, prev[k] = (k + m - 1) % m, next[k] = (k + 1) % m;
+    const Index j = static_cast<Index>(next_random(seed) % (k + 1));  // Fisher-Yates
+    std::swap(order[k], order[j]);
   }
-  return tr.finite_triangles();
+  std::vector<std::pair<Index, Index>> was(m);  // a corner's neighbours when taken out
+  for (Index k = 0; k + 3 < m; ++k) {
+    const Index p = order[k];
+    was[p] = {prev[p], next[p]};
+    next[prev[p]] = next[p], prev[next[p]] = prev[p];
+  }
+  const Index a = order[m - 1], b = next[a], c = next[b];
+  Fan fan{corners, {}, std::vector<Index>(3, Triangulation::none), std::vector<Index>(m)};
+  fan.f.push_back(Face{a, b, c});
+  fan.hull[a] = 2, fan.hull[b] = 0, fan.hull[c] = 1;
+  // Put them back in the reverse order: each between its two old neighbours, a new face
+  // (p, r, q) on the polygon edge q → r, then the flips around p (Fan::legalize).
+  for (Index k = m - 3; k-- > 0;) {
+    const Index p = order[k];
+    fan.insert(was[p].first, p, was[p].second);
+  }
+  return std::move(fan.f);
 }
 //< farthest-delaunay
 

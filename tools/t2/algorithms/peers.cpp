@@ -1,6 +1,6 @@
 // The peers of `t2 bench` that are not t2's algorithms: what they are called and what they
 // solve. Their runs are the worker's (bench/t2_bench_worker.cpp), which alone links CGAL and
-// qhull (and alone includes nanoflann and Boost.Geometry, header-only); tests/test_registry.cpp
+// qhull (and alone includes nanoflann, Boost.Geometry and Boost.Polygon, header-only); tests/test_registry.cpp
 // checks that the worker runs every one registered here.
 #include "algorithms/registry.hpp"
 
@@ -18,6 +18,10 @@ T2_PEER({"qhull", {"hull", "hull3d"}, "qhull (libqhull_r, default options: merge
 T2_PEER({"nanoflann", {"range"},
          "nanoflann 1.4's kd-tree (leaves of 10), each window a radius search under a 0/1 window metric", true});
 T2_PEER({"rtree", {"range"}, "Boost.Geometry's rtree<rstar<16>>, bulk loaded, covered_by queries", true});
+T2_PEER({"boost", {"voronoi-front"},
+         "Boost.Polygon's construct_voronoi (Fortune's sweep) on the points rounded to the grid 2^-24 (it takes "
+         "32-bit integers only): the vertex count of the rounded points",
+         false});
 T2_PEER({"raw", {"hull", "delaunay"},
          "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false, true});
 T2_PEER({"exact", {"hull", "delaunay"}, "ALGO's t2 code with exact GMP arithmetic on every call (no filter)", true,

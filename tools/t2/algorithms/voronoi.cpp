@@ -1,9 +1,10 @@
 // The Voronoi diagram of T² (chapter 11, t2/voronoi/voronoi.hpp) and its front half by
 // Fortune's sweep (t2/voronoi/fortune.hpp): timed by `t2 bench` on points of the plane; not yet
 // animated. Fortune's answer is the front half only (its vertices are the dual's front vertices),
-// so it is a problem of its own, "voronoi-front": the sizes `t2 bench` compares would differ. Its peers (Boost.Polygon's sweep, CGAL's
-// Delaunay and its dual) are timed on the same integer points by bench/bench_voronoi.cpp: the
-// worker's inputs are doubles, which Boost.Polygon does not take.
+// so it is a problem of its own, "voronoi-front": the sizes `t2 bench` compares would differ.
+// Boost.Polygon's sweep is its peer `boost` (algorithms/peers.cpp), on the worker's doubles
+// rounded to integers; bench/bench_voronoi.cpp times it and CGAL's Delaunay dual on the same
+// integer points.
 #include "algorithms/registry.hpp"
 #include "t2/voronoi/fortune.hpp"
 #include "t2/voronoi/voronoi.hpp"
@@ -29,7 +30,8 @@ T2_ALGORITHM({.name = "fortune",  // what `t2 voronoi --algorithm fortune` runs
               .title = "Fortune's sweep",
               .time = [](BenchInput& in) -> Timed {
                 return [&P = in.points] { return t2::fortune(std::span<const t2::Point>(P)).size(); };
-              }});
+              },
+              .peers = {"boost"}});
 
 }  // namespace
 }  // namespace t2cli::algorithms

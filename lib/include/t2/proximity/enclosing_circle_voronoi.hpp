@@ -24,12 +24,11 @@
 /// cocircular sites, the answer is the same circle (chapter 12), and the support is chosen from
 /// the sites on it as enclosing_circle.hpp says.
 ///
-/// **Cost.** Shamos: the Delaunay complex of all the sites, O(n log n) expected, plus Lawson's
-/// flips on the h hull corners for the farthest faces (O(h²) in the worst case, O(h) for
-/// cocircular corners; complex.hpp), then O(n) signs. Bhattacharya–Toussaint: the hull
-/// (O(n log n)), the calipers' diameter (O(h)), the diameter test against the h corners, and the
-/// farthest-point triangulation of the corners alone (the same flips). Both O(n log n) when the
-/// flips stay O(n log n) — always for h = O(√(n log n)), and h is O(log n) for uniform sites.
+/// **Cost.** Shamos: the Delaunay complex of all the sites, O(n log n) expected, with Chew's
+/// randomized farthest-point triangulation of the h hull corners, O(h) expected (complex.hpp),
+/// then O(n) signs. Bhattacharya–Toussaint: the hull (O(n log n)), the calipers' diameter
+/// (O(h)), the diameter test against the h corners, and the farthest-point triangulation of the
+/// corners alone (the same insertion). Both O(n log n), expected.
 
 #include <span>
 

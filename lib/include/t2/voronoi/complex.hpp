@@ -60,10 +60,10 @@
 /// site on Ω with the sites of one side collinear.
 ///
 /// **Cost.** One `delaunay` (or delaunay_t2), whose triangles and twins are copied as they are
-/// (no search), and, for (1), Lawson's flips on the h hull corners from a fan: O(h²) flips in
-/// the worst case (the upper lifted hull stands in for lawson.hpp's lower one), O(h) for
-/// cocircular corners; h is O(log n) for uniform points. The faces beyond the hull (and the
-/// flat fans of collinear sites) are linked to their twins through a hash of their edges.
+/// (no search), and, for (1), `farthest_delaunay` on the h hull corners: Chew's randomized
+/// insertion, O(h) expected (the upper lifted hull stands in for lawson.hpp's lower one). The
+/// faces beyond the hull (and the flat fans of collinear sites) are linked to their twins
+/// through a hash of their edges.
 
 #include <array>
 #include <span>
@@ -100,7 +100,8 @@ DelaunayComplex delaunay_complex(std::span<const Point> points);
 
 /// The farthest-point Delaunay triangulation of front points in strictly convex position,
 /// given counter-clockwise: triangles (indices into `corners`) counter-clockwise, each circle
-/// holding every corner (inside or on). Lawson's flips from a fan (file comment).
+/// holding every corner (inside or on). Chew's randomized insertion (a fixed seed: the same
+/// output every run), expected O(h) time for h corners (chapter 11).
 std::vector<std::array<Triangulation::Index, 3>> farthest_delaunay(std::span<const Point> corners);
 
 }  // namespace t2
