@@ -194,7 +194,9 @@ void check_front(unsigned seed, int n, int queries) {
     ASSERT_EQ(got, rtree.query(b)) << "box " << q;
     ASSERT_EQ(got, flann.query(b)) << "box " << q;
     ASSERT_EQ(tree.count(r), got.size());
-    if (q < 50) ASSERT_EQ(got, brute(f.points, r));
+    if (q < 50) {
+      ASSERT_EQ(got, brute(f.points, r));
+    }
     found += got.size();
     for (std::size_t i : got) on_side += f.points[i].x() == b[0] || f.points[i].x() == b[2] ||
                                          f.points[i].y() == b[1] || f.points[i].y() == b[3];

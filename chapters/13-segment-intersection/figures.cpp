@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -60,7 +61,7 @@ dr::Figure picture(const std::vector<Segment>& S, const std::vector<t2::Intersec
       continue;
     }
     f.segment(p, q, dr::Style().color(pal::blue).width(1.6));
-    f.add(label_point(p, q), dr::Style().size(0.1).label("s" + std::to_string(i)).label_angle(-60));
+    f.add(label_point(p, q), dr::Style().marker(dr::Marker::none).label("s" + std::to_string(i)).label_angle(-60));
   }
   for (const auto& x : X) {
     std::string l;
@@ -201,7 +202,7 @@ void figures(const std::filesystem::path& dir) {
       if (m.x() * ed.x() + m.y() * ed.y() < 0) m = t2::antipode(m);  // the one on l(θ)
       const bool met = t2::contains(e, m);
       f.segment(S[i].source(), S[i].target(), dr::Style().color(met ? pal::blue : pal::grey).width(met ? 1.8 : 1.2));
-      f.add(label_point(S[i].source(), S[i].target()), dr::Style().label("s" + std::to_string(i)).size(0));
+      f.add(label_point(S[i].source(), S[i].target()), dr::Style().marker(dr::Marker::none).label("s" + std::to_string(i)));
       if (!met) continue;
       const Point p = t2::to_double(m);
       status.push_back({std::atan2(std::hypot(p.x(), p.y()), p.w()), i});
@@ -211,7 +212,7 @@ void figures(const std::filesystem::path& dir) {
       const std::size_t i = status[k].second;
       t2::ExactPoint m = t2::meet(t2::join(t2::to_exact(S[i].source()), t2::to_exact(S[i].target())), t2::join(eo, ed));
       if (m.x() * ed.x() + m.y() * ed.y() < 0) m = t2::antipode(m);
-      f.add(t2::to_double(m), dr::Style().color(pal::blue).size(3.5).label(std::to_string(k + 1) + ": s" + std::to_string(i)).label_angle(-135));
+      f.add(t2::to_double(m), dr::Style().color(pal::blue).size(3.5).label(std::to_string(k + 1) + ": s" + std::to_string(i)).label_angle(m.w() < 0 ? std::numeric_limits<double>::quiet_NaN() : -135));
     }
     for (const auto& x : X) {
       const Point p = t2::to_double(x.point);

@@ -96,4 +96,4 @@ struct Registrar {
 #define T2_CONCAT(a, b) T2_CONCAT_(a, b)
 /// Registers a subcommand: T2_COMMAND({"name", "summary", setup_function});
 #define T2_COMMAND(...) \
-  static const ::t2cli::Registrar T2_CONCAT(t2_command_, __LINE__){::t2cli::Command __VA_ARGS__};
+  static const ::t2cli::Registrar T2_CONCAT(t2_command_, __COUNTER__){::t2cli::Command __VA_ARGS__};

@@ -46,7 +46,9 @@
 #include "t2/kernel/orient.hpp"
 
 namespace t2 {
-namespace {
+// Named: the ASan tree's unity build shares one translation unit between this file and the
+// other sweeps, whose helpers have the same names.
+namespace circular_sweep {
 
 /// An event point: an input point (p) or a meet (m, when p is null), the point itself, not its
 /// antipode.
@@ -405,10 +407,10 @@ std::vector<IntersectionPoint> Circular::run() {
   return out;
 }
 
-}  // namespace
+}  // namespace circular_sweep
 
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments) {
-  return Circular(segments, detail::circular_centre(segments)).run();
+  return circular_sweep::Circular(segments, detail::circular_centre(segments)).run();
 }
 
 }  // namespace t2

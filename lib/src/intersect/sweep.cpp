@@ -37,7 +37,9 @@
 #include "t2/kernel/orient.hpp"
 
 namespace t2 {
-namespace {
+// Named: the ASan tree's unity build shares one translation unit between this file and the
+// other sweeps, whose helpers have the same names.
+namespace plane_sweep {
 
 /// A front segment from its lower-left end to its upper-right end (the xy order), in doubles.
 struct Piece {
@@ -303,10 +305,10 @@ std::vector<IntersectionPoint> Sweep::run() {
   return out;
 }
 
-}  // namespace
+}  // namespace plane_sweep
 
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments) {
-  return Sweep(segments).run();
+  return plane_sweep::Sweep(segments).run();
 }
 
 }  // namespace t2

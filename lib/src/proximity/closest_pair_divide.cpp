@@ -30,7 +30,7 @@ namespace {
 
 using Index = Triangulation::Index;
 using Pair = std::pair<Index, Index>;
-constexpr Index none = Triangulation::none;
+constexpr Index no_site = Triangulation::none;
 
 /// A distinct site of one side: its input index and rounded Cartesian position.
 struct Site {
@@ -46,7 +46,7 @@ class Divide {
     slack_ = 0x1p-48 * M + 0x1p-500;
   }
 
-  /// The first pair of the side in the order of pair_before, or {none, none} under two sites.
+  /// The first pair of the side in the order of pair_before, or {no_site, no_site} under two sites.
   Pair run() {
     if (s_.size() >= 2) solve(0, s_.size());
     return best_;
@@ -55,7 +55,7 @@ class Divide {
  private:
   /// Tries the pair (a, b) against the best so far, exactly; a nearer pair lowers the bound.
   void consider(const Site& a, const Site& b) {
-    if (best_.first != none && !pair_before(P_, a.id, b.id, best_.first, best_.second)) return;
+    if (best_.first != no_site && !pair_before(P_, a.id, b.id, best_.first, best_.second)) return;
     best_ = {std::min(a.id, b.id), std::max(a.id, b.id)};
     const double dx = a.x - b.x, dy = a.y - b.y;
     if (!all_) bound_ = std::sqrt(dx * dx + dy * dy) + slack_;
@@ -95,7 +95,7 @@ class Divide {
   std::vector<Site> s_, tmp_;
   bool all_ = false;  ///< no filter: the quotients leave its range
   double slack_ = 0, bound_ = INFINITY;
-  Pair best_{none, none};
+  Pair best_{no_site, no_site};
 };
 
 /// The closest pair of one side's sites `list` (as front points `F`, parallel to `list`);
@@ -145,12 +145,12 @@ Pair closest_pair_divide(std::span<const Point> P) {
     for (auto [d, k] : merged.duplicates()) kept[d] = k;
   }
   Pair best = detail::equal_sites_pair(kept);
-  if (best.first != none) return best;
+  if (best.first != no_site) return best;
   best = pf;
-  if (pb.first != none && (best.first == none || pair_before(P, pb.first, pb.second, best.first, best.second)))
+  if (pb.first != no_site && (best.first == no_site || pair_before(P, pb.first, pb.second, best.first, best.second)))
     best = pb;
-  if (best.first != none) return best;
-  return detail::pair_without_finite_distance(P, omega.empty() ? none : omega.front());
+  if (best.first != no_site) return best;
+  return detail::pair_without_finite_distance(P, omega.empty() ? no_site : omega.front());
 }
 
 }  // namespace t2

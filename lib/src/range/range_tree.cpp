@@ -51,7 +51,7 @@ struct Builder {
 };
 
 template <class Visit>
-struct Walker {
+struct CascadeWalker {
   const std::vector<std::vector<std::uint32_t>>& level;
   const std::vector<std::vector<std::uint32_t>>& bridge;
   std::size_t i0, i1;  // the leaves in the x-interval: [i0, i1)
@@ -74,12 +74,12 @@ struct Walker {
   //< rangetree-query
 };
 
-struct Counter {
+struct CascadeCounter {
   std::size_t n = 0;
   void all(const std::uint32_t* b, const std::uint32_t* e) { n += static_cast<std::size_t>(e - b); }
 };
 
-struct Reporter {
+struct CascadeReporter {
   const std::vector<DrawnPoint>& byx;
   std::vector<std::size_t>& out;
   void all(const std::uint32_t* b, const std::uint32_t* e) {
@@ -118,12 +118,12 @@ void RangeTree::walk(const ExactBBox& b, Visit& v) const {
   const auto y_in = [&](std::uint32_t k) { return w.hi[1].at_least(P[k].y, P[k].w); };
   const std::size_t j0 = std::partition_point(root.begin(), root.end(), y_below) - root.begin();
   const std::size_t j1 = std::partition_point(root.begin(), root.end(), y_in) - root.begin();
-  Walker<Visit>{t.level, t.bridge, i0, i1, v}.walk(0, 0, P.size(), j0, j1);
+  CascadeWalker<Visit>{t.level, t.bridge, i0, i1, v}.walk(0, 0, P.size(), j0, j1);
 }
 
 std::size_t RangeTree::count(const ExactIsoRect& r) const {
   return range::count_in(r, omega_, [this](const ExactBBox& b) {
-    Counter c;
+    CascadeCounter c;
     walk(b, c);
     return c.n;
   });
@@ -131,7 +131,7 @@ std::size_t RangeTree::count(const ExactIsoRect& r) const {
 
 std::vector<std::size_t> RangeTree::report(const ExactIsoRect& r) const {
   return range::report_in(r, omega_, [this](const ExactBBox& b, std::vector<std::size_t>& out) {
-    Reporter rep{side_[b.side() == Side::front ? 0 : 1].byx, out};
+    CascadeReporter rep{side_[b.side() == Side::front ? 0 : 1].byx, out};
     walk(b, rep);
   });
 }

@@ -125,8 +125,8 @@ struct Registrar {
 
 #define T2_ALGO_CONCAT_(a, b) a##b
 #define T2_ALGO_CONCAT(a, b) T2_ALGO_CONCAT_(a, b)
-#define T2_ALGO_REGISTER_(type, ...)                                                   \
-  static const ::t2cli::algorithms::Registrar T2_ALGO_CONCAT(t2_algorithm_, __LINE__){ \
+#define T2_ALGO_REGISTER_(type, ...)                                                       \
+  static const ::t2cli::algorithms::Registrar T2_ALGO_CONCAT(t2_algorithm_, __COUNTER__){ \
       ::t2cli::algorithms::type __VA_ARGS__};
 /// Registers an algorithm: T2_ALGORITHM({.name = "graham", .problem = "hull", ...});
 #define T2_ALGORITHM(...) T2_ALGO_REGISTER_(Algorithm, __VA_ARGS__)
