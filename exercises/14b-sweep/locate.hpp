@@ -32,7 +32,7 @@ struct Location {
 /// there. Faces may lie on the back side or cross Ω; the map may leave part of T² uncovered, in
 /// several pieces (holes). Points of P that no face uses are not vertices of the map.
 ///
-/// T holds up to 120 000 faces and Q up to 110 000 queries, in no particular order (shuffled):
+/// T holds up to 10⁵ faces and Q up to 10⁵ queries, in no particular order (shuffled):
 /// a walk from the last answer crosses about √f faces a query and stops at every hole. Locate
 /// them all in O((f + m) log(f + m)): sweep (chapter 13) the half-great-circles from a pole of
 /// T², or another logarithmic method; testing every face is far too slow.
