@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -172,12 +173,39 @@ INSTANTIATE_TEST_SUITE_P(All, Exercise, ::testing::ValuesIn(exercise_ids()),
 TEST(Exercises, TwoForEveryChapter) {
   // Folders NN-slug and NNb-slug, of rising difficulty (issue 12 for Part I, issue 13 onwards).
   const auto ids = exercise_ids();
-  for (const char* want : {"01", "02", "03", "04", "05", "06", "07", "08", "09", "10", "11", "12", "13", "15"}) {
+  for (const char* want : {"01", "02", "03", "04", "05", "06", "07", "08", "09", "10", "11", "12", "13", "14", "15"}) {
     const auto n = std::count_if(ids.begin(), ids.end(), [&](const std::string& s) {
       return s.rfind(std::string(want) + "-", 0) == 0 || s.rfind(std::string(want) + "b-", 0) == 0;
     });
     EXPECT_GE(n, 2) << "chapter " << want << " needs at least two graded exercises";
   }
+}
+
+// The grader reads the compiled object's symbols: a solution of 14b that refers to the library's
+// t2::locate_brute (declared by hand, since no allowed header declares it) scores 0, named.
+TEST(Exercises, Ex14bRefusesTheLibrarysLocator) {
+  if (sanitized()) GTEST_SKIP() << "grading compiles and runs programs: skipped under sanitizers";
+  TempDir t;
+  std::ofstream(t.path / "locate.cpp") << R"(#include "locate.hpp"
+#include <stdexcept>
+namespace t2 {
+class Subdivision;
+struct Location;
+Location locate_brute(const Subdivision& S, const Point& p);
+}  // namespace t2
+namespace ex14b {
+std::vector<Location> locate_all(const std::vector<t2::Point>&, const std::vector<Triangle>&,
+                                 const std::vector<t2::Point>&) {
+  using Brute = t2::Location (*)(const t2::Subdivision&, const t2::Point&);
+  volatile Brute brute = &t2::locate_brute;
+  (void)brute;
+  throw std::logic_error("locate_all() is not implemented yet");
+}
+}  // namespace ex14b
+)";
+  const Results r = grade(kTool, "14b", t.path);
+  EXPECT_EQ(r.score, 0);
+  EXPECT_NE(r.output.find("your code calls t2::locate_brute"), std::string::npos) << r.output;
 }
 
 }  // namespace
