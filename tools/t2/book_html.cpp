@@ -46,13 +46,13 @@ std::string xml_unescape(std::string s) {
   return s;
 }
 
-struct Part {
+struct CoursePart {
   std::string numeral, title;
   int first = 0, last = 0;
 };
 
-std::vector<Part> read_parts(const fs::path& file) {
-  std::vector<Part> parts;
+std::vector<CoursePart> read_parts(const fs::path& file) {
+  std::vector<CoursePart> parts;
   if (!fs::exists(file)) return parts;
   static const std::regex re(R"(^\s*([IVXL]+)\s+([0-9]+)\s+([0-9]+)\s+(.+?)\s*$)");
   for (const auto& l : split_lines(t2::read_file(file))) {

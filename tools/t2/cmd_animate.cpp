@@ -12,7 +12,7 @@
 #include "scene_argument.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_animate {
 
 struct Options {
   std::string algo;
@@ -64,8 +64,8 @@ Action setup(Arguments& app) {
   return [o] { return animate(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_animate
 
-T2_COMMAND({"animate", "step-through animation of an algorithm, as one HTML page", setup});
+T2_COMMAND({"animate", "step-through animation of an algorithm, as one HTML page", cmd_animate::setup});
 
 }  // namespace t2cli

@@ -12,7 +12,7 @@
 #include "t2/proximity/nearest_neighbors.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_ann {
 
 struct Options {
   std::string file;       ///< the scene file, - for standard input
@@ -56,8 +56,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_ann
 
-T2_COMMAND({"ann", "the nearest neighbour of each of a scene's points in T2 ('i j' a line)", setup});
+T2_COMMAND({"ann", "the nearest neighbour of each of a scene's points in T2 ('i j' a line)", cmd_ann::setup});
 
 }  // namespace t2cli

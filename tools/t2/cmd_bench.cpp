@@ -27,7 +27,7 @@
 #include <t2/draw/loglog.hpp>
 
 namespace t2cli {
-namespace {
+namespace cmd_bench {
 
 using namespace t2bench;
 
@@ -282,8 +282,8 @@ Action setup(Arguments& app) {
   return [o] { return bench(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_bench
 
-T2_COMMAND({"bench", "time algorithms against peers over n: table, growth exponent, log-log plot", setup});
+T2_COMMAND({"bench", "time algorithms against peers over n: table, growth exponent, log-log plot", cmd_bench::setup});
 
 }  // namespace t2cli

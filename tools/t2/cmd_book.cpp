@@ -9,7 +9,7 @@
 #include "command.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_book {
 
 namespace fs = std::filesystem;
 
@@ -133,8 +133,8 @@ Action setup(Arguments& app) {
   return [a] { return book_command(*a); };
 }
 
-}  // namespace
+}  // namespace cmd_book
 
-T2_COMMAND({"book", "build the HTML book; check or sync its listings", setup});
+T2_COMMAND({"book", "build the HTML book; check or sync its listings", cmd_book::setup});
 
 }  // namespace t2cli

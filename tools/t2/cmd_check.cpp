@@ -8,7 +8,7 @@
 #include "grader_core.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_check {
 
 struct Options {
   std::string name;
@@ -38,8 +38,8 @@ Action setup(Arguments& app) {
   return [o] { return check(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_check
 
-T2_COMMAND({"check", "run the public tests of an exercise on your code, with hints", setup});
+T2_COMMAND({"check", "run the public tests of an exercise on your code, with hints", cmd_check::setup});
 
 }  // namespace t2cli

@@ -12,7 +12,7 @@
 #include "t2/proximity/closest_pair.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_closest_pair {
 
 struct Options {
   std::string file;                   ///< the scene file, - for standard input
@@ -53,8 +53,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_closest_pair
 
-T2_COMMAND({"closest-pair", "the closest pair of a scene's points in T2 ('i j')", setup});
+T2_COMMAND({"closest-pair", "the closest pair of a scene's points in T2 ('i j')", cmd_closest_pair::setup});
 
 }  // namespace t2cli

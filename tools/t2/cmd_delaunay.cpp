@@ -10,7 +10,7 @@
 #include "triangles_command.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_delaunay {
 
 Action setup(Arguments& app) {
   auto o = std::make_shared<TrianglesOptions>();
@@ -34,8 +34,8 @@ Action setup(Arguments& app) {
   });
 }
 
-}  // namespace
+}  // namespace cmd_delaunay
 
-T2_COMMAND({"delaunay", "the Delaunay triangulation of a scene's points (index triples)", setup});
+T2_COMMAND({"delaunay", "the Delaunay triangulation of a scene's points (index triples)", cmd_delaunay::setup});
 
 }  // namespace t2cli

@@ -16,7 +16,7 @@
 #include "t2/kernel/line.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_diameter {
 
 namespace dr = t2::draw;
 
@@ -104,8 +104,8 @@ Action setup(Arguments& app) {
   return [o] { return diameter(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_diameter
 
-T2_COMMAND({"diameter", "a farthest pair of a scene's points (and the width)", setup});
+T2_COMMAND({"diameter", "a farthest pair of a scene's points (and the width)", cmd_diameter::setup});
 
 }  // namespace t2cli

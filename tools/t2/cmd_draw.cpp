@@ -16,7 +16,7 @@
 #include "t2/kernel/scene.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_draw {
 
 namespace dr = t2::draw;
 
@@ -100,8 +100,8 @@ Action setup(Arguments& app) {
   return [o] { return draw(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_draw
 
-T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model, or both", setup});
+T2_COMMAND({"draw", "draw a scene file in the planar model, the spherical model, or both", cmd_draw::setup});
 
 }  // namespace t2cli

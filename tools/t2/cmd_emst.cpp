@@ -11,7 +11,7 @@
 #include "t2/proximity/spanning_tree.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_emst {
 
 struct Options {
   std::string file;       ///< the scene file, - for standard input
@@ -46,8 +46,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_emst
 
-T2_COMMAND({"emst", "the minimum spanning tree of a scene's points in T2 (one edge 'i j' a line)", setup});
+T2_COMMAND({"emst", "the minimum spanning tree of a scene's points in T2 (one edge 'i j' a line)", cmd_emst::setup});
 
 }  // namespace t2cli

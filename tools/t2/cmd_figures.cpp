@@ -22,7 +22,7 @@
 #include "t2/kernel/io.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_figures {
 
 namespace fs = std::filesystem;
 
@@ -201,8 +201,8 @@ Action setup(Arguments& app) {
   return [o] { return figures(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_figures
 
-T2_COMMAND({"figures", "regenerate every figure (chapters and gallery), or check them", setup});
+T2_COMMAND({"figures", "regenerate every figure (chapters and gallery), or check them", cmd_figures::setup});
 
 }  // namespace t2cli

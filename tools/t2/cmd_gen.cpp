@@ -10,7 +10,7 @@
 #include "t2/kernel/io.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_gen {
 
 struct Options {
   std::string kind;
@@ -63,8 +63,8 @@ Action setup(Arguments& app) {
   return [o] { return generate(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_gen
 
-T2_COMMAND({"gen", "seeded random inputs: points, polygons, segments (scene files)", setup});
+T2_COMMAND({"gen", "seeded random inputs: points, polygons, segments (scene files)", cmd_gen::setup});
 
 }  // namespace t2cli

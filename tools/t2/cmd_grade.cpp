@@ -9,7 +9,7 @@
 #include "t2/kernel/io.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_grade {
 
 namespace fs = std::filesystem;
 
@@ -71,8 +71,8 @@ Action setup(Arguments& app) {
   return [o] { return grade(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_grade
 
-T2_COMMAND({"grade", "grade a submission: public and hidden tests, Gradescope results.json", setup});
+T2_COMMAND({"grade", "grade a submission: public and hidden tests, Gradescope results.json", cmd_grade::setup});
 
 }  // namespace t2cli

@@ -16,7 +16,7 @@
 #include "t2/kernel/scene.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_hull {
 
 namespace dr = t2::draw;
 
@@ -91,8 +91,8 @@ Action setup(Arguments& app) {
   return [o] { return hull(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_hull
 
-T2_COMMAND({"hull", "the convex hull of a scene's points (indices, counter-clockwise)", setup});
+T2_COMMAND({"hull", "the convex hull of a scene's points (indices, counter-clockwise)", cmd_hull::setup});
 
 }  // namespace t2cli

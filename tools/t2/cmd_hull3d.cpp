@@ -17,7 +17,7 @@
 #include "t2/kernel/scene.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_hull3d {
 
 struct Options {
   std::string file;
@@ -104,8 +104,8 @@ Action setup(Arguments& app) {
   return [o] { return hull3d(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_hull3d
 
-T2_COMMAND({"hull3d", "the convex hull of points of R3 (outward triangles)", setup});
+T2_COMMAND({"hull3d", "the convex hull of points of R3 (outward triangles)", cmd_hull3d::setup});
 
 }  // namespace t2cli

@@ -14,7 +14,7 @@
 #include "t2/kernel/scene.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_info {
 
 // x/w or y/w may overflow a double for a valid point (w = 1e-300, x = 1e300): say so.
 constexpr const char* kOverflow = "(overflows double)";
@@ -123,8 +123,8 @@ Action setup(Arguments& app) {
   return [o] { return info(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_info
 
-T2_COMMAND({"info", "what a scene file holds: sides, coordinates, orientations", setup});
+T2_COMMAND({"info", "what a scene file holds: sides, coordinates, orientations", cmd_info::setup});
 
 }  // namespace t2cli

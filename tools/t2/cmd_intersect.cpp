@@ -13,7 +13,7 @@
 #include "t2/kernel/scene.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_intersect {
 
 struct Options {
   std::string file;
@@ -83,9 +83,9 @@ Action setup(Arguments& app) {
   return [o] { return intersect(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_intersect
 
 T2_COMMAND({"intersect", "the intersection points of a scene's segments (exact, with the segments through them)",
-            setup});
+            cmd_intersect::setup});
 
 }  // namespace t2cli

@@ -13,7 +13,7 @@
 #include "t2/kernel/io.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_kernel {
 
 namespace dr = t2::draw;
 
@@ -97,8 +97,8 @@ Action setup(Arguments& app) {
   return [o] { return polygon_kernel(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_kernel
 
-T2_COMMAND({"kernel", "the kernel of a scene's polygon (the points that see all of it)", setup});
+T2_COMMAND({"kernel", "the kernel of a scene's polygon (the points that see all of it)", cmd_kernel::setup});
 
 }  // namespace t2cli

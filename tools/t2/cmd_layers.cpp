@@ -12,7 +12,7 @@
 #include "t2/kernel/io.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_layers {
 
 namespace dr = t2::draw;
 
@@ -89,8 +89,8 @@ Action setup(Arguments& app) {
   return [o] { return layers(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_layers
 
-T2_COMMAND({"layers", "the convex layers of a scene's points (one line per layer)", setup});
+T2_COMMAND({"layers", "the convex layers of a scene's points (one line per layer)", cmd_layers::setup});
 
 }  // namespace t2cli

@@ -12,7 +12,7 @@
 #include "t2/proximity/empty_circle.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_lec {
 
 int run(const ProximityOptions& o) {
   const t2::Scene scene = read_scene_argument(o.file);
@@ -54,8 +54,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_lec
 
-T2_COMMAND({"lec", "the largest empty circle of a scene's points in T2 ('W X Y', the points on it)", setup});
+T2_COMMAND({"lec", "the largest empty circle of a scene's points in T2 ('W X Y', the points on it)", cmd_lec::setup});
 
 }  // namespace t2cli

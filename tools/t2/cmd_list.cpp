@@ -7,7 +7,7 @@
 #include "command.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_list {
 
 int list(const std::filesystem::path& root) {
   const auto chapters = book::find_chapters(root);
@@ -35,8 +35,8 @@ Action setup(Arguments& app) {
   return [root] { return list(*root); };
 }
 
-}  // namespace
+}  // namespace cmd_list
 
-T2_COMMAND({"list", "list the chapters of the course", setup});
+T2_COMMAND({"list", "list the chapters of the course", cmd_list::setup});
 
 }  // namespace t2cli

@@ -16,7 +16,7 @@
 #include "t2/location/walk.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_locate {
 
 struct Options {
   std::string map, queries;
@@ -94,8 +94,8 @@ Action setup(Arguments& app) {
   return [o] { return locate(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_locate
 
-T2_COMMAND({"locate", "where points lie in a subdivision of T2 (faces given as polygons)", setup});
+T2_COMMAND({"locate", "where points lie in a subdivision of T2 (faces given as polygons)", cmd_locate::setup});
 
 }  // namespace t2cli

@@ -20,7 +20,7 @@
 #include "t2/range/range_tree.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_range {
 
 struct Options {
   std::string points, rects;
@@ -129,8 +129,8 @@ Action setup(Arguments& app) {
   return [o] { return range(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_range
 
-T2_COMMAND({"range", "the points of a scene in iso-rectangles of T2 (counted or listed)", setup});
+T2_COMMAND({"range", "the points of a scene in iso-rectangles of T2 (counted or listed)", cmd_range::setup});
 
 }  // namespace t2cli

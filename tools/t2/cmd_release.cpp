@@ -20,7 +20,7 @@
 #define T2_SOURCE_DIR "."
 #endif
 
-namespace {
+namespace cmd_release {  // named: the ASan tree's unity build shares translation units
 
 namespace fs = std::filesystem;
 
@@ -183,6 +183,6 @@ t2cli::Action setup(t2cli::Arguments& app) {
   return [o] { return release(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_release
 
-T2_COMMAND({"release", "write the student tree, a Gradescope autograder or a Classroom template", setup});
+T2_COMMAND({"release", "write the student tree, a Gradescope autograder or a Classroom template", cmd_release::setup});

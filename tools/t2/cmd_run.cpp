@@ -9,7 +9,7 @@
 #include "command.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_run {
 
 namespace fs = std::filesystem;
 
@@ -56,8 +56,8 @@ Action setup(Arguments& app) {
   return [o, &app] { return run(*o, app.remaining()); };
 }
 
-}  // namespace
+}  // namespace cmd_run
 
-T2_COMMAND({"run", "build and run the program of a chapter", setup});
+T2_COMMAND({"run", "build and run the program of a chapter", cmd_run::setup});
 
 }  // namespace t2cli

@@ -13,7 +13,7 @@
 #include "t2/proximity/enclosing_circle_voronoi.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_sec {
 
 struct Options {
   std::string file;                ///< the scene file, - for standard input
@@ -80,8 +80,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_sec
 
-T2_COMMAND({"sec", "the smallest enclosing circle of a scene's points in T2 ('W X Y', the points on it)", setup});
+T2_COMMAND({"sec", "the smallest enclosing circle of a scene's points in T2 ('W X Y', the points on it)", cmd_sec::setup});
 
 }  // namespace t2cli

@@ -7,7 +7,7 @@
 #include "triangles_command.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_triangulate {
 
 Action setup(Arguments& app) {
   auto o = std::make_shared<TrianglesOptions>();
@@ -23,8 +23,8 @@ Action setup(Arguments& app) {
                          [](std::span<const t2::Point> P, const TrianglesOptions&) { return t2::triangulate(P); });
 }
 
-}  // namespace
+}  // namespace cmd_triangulate
 
-T2_COMMAND({"triangulate", "a triangulation of a scene's points (triangles as index triples)", setup});
+T2_COMMAND({"triangulate", "a triangulation of a scene's points (triangles as index triples)", cmd_triangulate::setup});
 
 }  // namespace t2cli

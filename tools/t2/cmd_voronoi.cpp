@@ -19,7 +19,7 @@
 #include "t2/voronoi/voronoi.hpp"
 
 namespace t2cli {
-namespace {
+namespace cmd_voronoi {
 
 using Index = t2::VoronoiDiagram::Index;
 
@@ -212,8 +212,8 @@ Action setup(Arguments& app) {
   return [o] { return run(*o); };
 }
 
-}  // namespace
+}  // namespace cmd_voronoi
 
-T2_COMMAND({"voronoi", "the Voronoi diagram of T2 of a scene's points (exact vertices, edges)", setup});
+T2_COMMAND({"voronoi", "the Voronoi diagram of T2 of a scene's points (exact vertices, edges)", cmd_voronoi::setup});
 
 }  // namespace t2cli

@@ -7,7 +7,8 @@
 //
 //   #include "command.hpp"
 //   namespace t2cli {
-//   namespace {
+//   namespace cmd_frob {                  // named after the file: the ASan tree's unity build
+//                                         // compiles several commands in one translation unit
 //   struct Options {                      // what the command line says, with the defaults
 //     std::string file;
 //     bool verbose = false;
@@ -21,8 +22,8 @@
 //     app.footer("Exit status: 0 done; 2 bad usage or bad input.");
 //     return [o] { return frob(*o); };
 //   }
-//   }  // namespace
-//   T2_COMMAND({"frob", "one line for t2 --help", setup});
+//   }  // namespace cmd_frob
+//   T2_COMMAND({"frob", "one line for t2 --help", cmd_frob::setup});
 //   }  // namespace t2cli
 //
 // One declaration per option: its names, the variable it fills, its help line, and its checks
