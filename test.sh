@@ -7,10 +7,11 @@
 # No test runs a benchmark program, so the default tree here builds none (build.sh builds them:
 # its preset turns T2_BUILD_BENCHMARKS on again); the ASan tree builds the benchmark worker, which
 # its tests run.
-# The ASan tree is a unity build (CMakePresets.json): the files of one target are compiled eight to
-# a translation unit, so two files of a target must not give one name two meanings at file scope,
-# anonymous namespaces included (name the namespace, as lib/src/intersect/sweep.cpp does). The
-# default tree compiles one file a unit, so a missing #include still fails there.
+# The sources also compile as a unity build (`cmake --preset asan -DCMAKE_UNITY_BUILD=ON`, eight
+# files a translation unit: so no two files of a target give one name two meanings at file scope,
+# anonymous namespaces included). Measured on the ASan tree it saved 3 % of the wall time (874 s
+# -> 847 s) and would make an incremental rebuild recompile eight files, so both trees here
+# compile one file a unit.
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/deps.sh

@@ -20,7 +20,7 @@
 #define T2_SOURCE_DIR "."
 #endif
 
-namespace cmd_release {  // named: the ASan tree's unity build shares translation units
+namespace cmd_release {  // named: a unity build shares translation units
 
 namespace fs = std::filesystem;
 

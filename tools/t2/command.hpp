@@ -7,7 +7,7 @@
 //
 //   #include "command.hpp"
 //   namespace t2cli {
-//   namespace cmd_frob {                  // named after the file: the ASan tree's unity build
+//   namespace cmd_frob {                  // named after the file: a unity build
 //                                         // compiles several commands in one translation unit
 //   struct Options {                      // what the command line says, with the defaults
 //     std::string file;

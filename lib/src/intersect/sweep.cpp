@@ -37,7 +37,7 @@
 #include "t2/kernel/orient.hpp"
 
 namespace t2 {
-// Named: the ASan tree's unity build shares one translation unit between this file and the
+// Named: a unity build (test.sh) shares one translation unit between this file and the
 // other sweeps, whose helpers have the same names.
 namespace plane_sweep {
 
