@@ -3,75 +3,37 @@
 /// @brief The Delaunay triangulation of points on both sides of T²: the dual of the T² Voronoi
 /// diagram, built from the planar triangulations of each side and a merge along Ω.
 ///
-/// **The Voronoi diagram it is dual to.** Distances as in §4.3.1 of seed 000 (distance.hpp): on
-/// one side the Euclidean distance; across sides "beyond infinity", where the *larger* the
-/// Euclidean distance between the drawn positions, the *nearer*, and the antipode is the
-/// farthest point of all. Let F be the sites in front (w > 0) and B those behind (w < 0), both
-/// non-empty. (1) A front query point is nearer to every front site than to any back site, so the
-/// front hemisphere is divided exactly as the Euclidean Voronoi diagram of F divides the plane;
-/// the back hemisphere likewise by B. (2) On Ω the two meet. Follow a front point q off to the
-/// point at infinity ζ = [0, u]: the nearest front site is eventually the one extreme in the
-/// direction u (|Q − A| = |Q| − u·A + o(1) for Q = t u, the sweep rule of §4.3.1). A back point
-/// tends to [0, u] when its drawn position runs off in the direction −u, so the back site owning
-/// ζ from behind is the one whose drawn position B̄ is extreme in the direction −u. Hence Ω is a
-/// chain of Voronoi edges, each between a front site a and a back site b, broken at two kinds of
-/// Voronoi vertices: where the front owner changes — u is the outer normal n of a hull edge a₁ a₂
-/// of F — and where the back owner changes — −u is the outer normal of a hull edge b̄₁ b̄₂ of the
-/// drawn B̄. (In general position no two breaks coincide; ties are broken front first.)
-///
-/// **The dual.** Front Voronoi vertices are the Delaunay triangles of F, back ones those of B
-/// (counter-clockwise in T²: the drawn back side is mirrored, so they are the clockwise triangles
-/// of the drawn B̄). Each break on Ω gives a *band* face: (a₂, a₁, b) for the front hull edge
-/// a₁ → a₂ (counter-clockwise around F) and the current back owner b, or (b₁, b₂, a) for the
-/// drawn hull edge b̄₁ → b̄₂ and the current front owner a. Walking u once around the circle
-/// merges the two sequences of hull edges by the angle of their normals (an exact merge of
-/// directions: `detail::cross_of_differences`, angle.hpp), so the band closes up between the
-/// two hulls.
-/// The disk of each face — the points nearer to its Voronoi vertex than its vertices — is the
-/// kernel's `in_circle` (incircle.hpp): the Euclidean disk for one-sided faces, for a band face
-/// the lune between the line a₁ a₂ (front) and its parallel through b (back).
-///
-/// **Properties, with proofs.**
-///  1. *Empty disks.* Every face's disk holds no site strictly (and in general position only
-///     the Delaunay faces have empty disks, which the brute-force test checks). For one-sided
-///     faces by (1). For the band face (a₂, a₁, b): a front site d is inside iff it lies
-///     strictly beyond the hull edge a₁ a₂ — none does; a back site d is inside iff its drawn
-///     position is strictly further than b̄ in the direction −n — none is, b̄ being extreme.
-///  2. *Orientation and the hull.* A band face (a₂, a₁, b) has orient = orient(A₁, A₂, B̄) of the
-///     drawn positions (the back row has w < 0). If it is negative, then n·B̄ > n·A₁ for every
-///     back site (b̄ minimizes n·B̄), so with ℓ = the line a₁ ∨ a₂, every site is on its closed
-///     inner side and only front sites on the segment a₁ a₂ are on ℓ: the sites lie in an open
-///     hemisphere (tilt ℓ about the midpoint of a₁ a₂) — the convex hull exists. Contrapositive:
-///     without a hull every face turns counter-clockwise or is flat (orient = 0). Flat faces come
-///     from an antipodal pair a, ¬a (b̄ = A at a corner of both hulls): the seed's degenerate
-///     face of figure 5.18, a lune bounded by the line through a and its neighbour and a half
-///     great circle from a to ¬a. Which one is a choice (the dual is combinatorial): the
-///     triangulation records it as Algorithm 9 does, the sphere bisector of the angle the two
-///     lunes leave at a (face_kind.hpp, `Triangulation::antipodal_edges()`), so that the exact
-///     walk of `locate` reads both constructions alike.
-///  3. *With a hull* (all sites in an open hemisphere, e.g. a few back points near Ω) the
-///     clockwise band faces are the Voronoi vertices "beyond" the hull, as the farthest-point
-///     triangles are for front-only input; as there, they are replaced by v∞: each edge between
-///     a clockwise face and a counter-clockwise one becomes a hull edge with an infinite
-///     triangle. The tests certify that the result tiles the hull (below).
-///  4. *Tiling.* A closed triangulated surface whose faces are all positively oriented spherical
-///     triangles is a branched covering of the sphere; its degree is the number of faces that
-///     contain any generic point. The tests count it at random points, exactly (orient), and
-///     find 1: the triangles tile the sphere (or the hull, with v∞).
+/// **Definition and proofs: chapter 10, section 8** (chapters/10-delaunay/chapter-3.md), written
+/// once there for this file and for chapter 11. In short: with F the front sites and B the back
+/// ones, each hemisphere is divided as the plane is by the Euclidean Voronoi diagram of its own
+/// sites (Lemma 1), Ω is a chain of Voronoi edges between a front and a back owner, and the dual
+/// is the planar Delaunay triangulation of F, that of B (counter-clockwise in T², so mirrored as
+/// drawn), and one *band* face per break on Ω: (a₂, a₁, b) for a front hull edge a₁ → a₂ and the
+/// back site b extreme (drawn) in the direction −n of its outer normal, (b₁, b₂, a) likewise for
+/// a back hull edge. A face's disk is the kernel's `in_circle` (incircle.hpp): Euclidean for
+/// one-sided faces, a lune for a band face. Theorem 2 there proves the disks empty, the band
+/// closed (an exact merge of the two hulls' normals: `detail::cross_of_differences`, angle.hpp),
+/// and that a clockwise band face means the sites have a hull. Implementation choices recorded
+/// here: a flat face of an antipodal pair a, ¬a is recorded as Algorithm 9 does, by the sphere
+/// bisector of the angle the two lunes leave at a (face_kind.hpp, `Triangulation::antipodal_edges()`),
+/// so that the exact walk of `locate` reads both constructions alike; with a hull, each edge
+/// between a clockwise band face and a counter-clockwise face becomes a hull edge with an
+/// infinite triangle (v∞); the tests certify that the faces tile the sphere (or the hull) by
+/// counting, exactly, the faces that hold random points.
 ///
 /// **Sites on Ω** (Z, directions). Seen from a proper point every site on its own side is
-/// nearer than any site on Ω, so (1) still divides each hemisphere that holds sites. On Ω the
+/// nearer than any site on Ω, so Lemma 1 still divides each hemisphere that holds sites. On Ω the
 /// distance between two directions is their angle (seed 000, §4.3.1, figure 4.15) and a proper
 /// site is as far as the lunes of incircle.hpp say: 90°. So a point [0, u] of Ω belongs to the
 /// site of Z nearest in angle when that angle is below 90°, and to the front and back owners
-/// of (2) otherwise — the band survives only in the gaps of Z wider than π. The dual (built by
+/// of Lemma 1 otherwise — the band survives only in the gaps of Z wider than π. The dual (built by
 /// delaunay_ring.hpp in one sweep of u): the planar triangulations of F and B; a face (a₂, a₁, z)
 /// for each front hull edge whose normal z owns, (b₁, b₂, z) likewise behind; for consecutive
 /// sites z₁, z₂ of Z less than π apart the faces (z₁, z₂, a) and (z₂, z₁, b) with a, b the
 /// owners at the middle of the arc; at each end of a gap wider than π a face (a, z, b); and the
 /// band in the gaps. Their disks are `in_face_disk` (face_disk.hpp): the kernel's lunes, whose
 /// ties on Ω (every site on the open half of Ω of a face (a₁, a₂, z) is *on* its circle) the
-/// angle breaks, and for (z₁, z₂, a) the lune centred at the middle of the arc. Property 1
+/// angle breaks, and for (z₁, z₂, a) the lune centred at the middle of the arc. Theorem 2 (a)
 /// holds for them as for the band: a face's disk is what its Voronoi vertex sees nearer than its
 /// vertices, and each vertex is an owner there. It is also the plane's answer: with every site
 /// of Z replaced by a front point at one common radius t along its direction, the planar
