@@ -3,7 +3,7 @@
 // between front vertices, and the point where each edge leaving the front side crosses Ω); a
 // brute force on small inputs with exact rationals (every vertex equidistant from its sites, no
 // site nearer, and every empty circle through three sites is a vertex); Boost.Polygon's sweep
-// (vertex and edge counts) on integer coordinates.
+// (vertex and edge counts) on integer coordinates; inputs that broke other Voronoi codes.
 #include <gtest/gtest.h>
 #include <gmpxx.h>
 
@@ -20,6 +20,7 @@
 #include "t2/voronoi/fortune.hpp"
 #include "t2/voronoi/voronoi.hpp"
 #include "voronoi_inputs.hpp"
+#include "voronoi_regressions.hpp"
 
 namespace t2 {
 namespace {
@@ -285,6 +286,16 @@ TEST(Fortune, BruteForceOnSmallInputs) {
   for (int k = 0; k < 200; ++k) {
     const auto p = k % 2 ? testing::grid_sites(3 + k % 9, 2, 1, rng) : integer_sites(3 + k % 9, 3, rng);
     EXPECT_EQ(certificate_error(p, fortune(p)), "") << k;
+  }
+}
+
+// Inputs that broke other Voronoi codes (voronoi_regressions.hpp): Fortune equals the dual on each,
+// and the brute force certifies the small ones.
+TEST(Fortune, InputsThatBrokeOtherVoronoiCodes) {
+  for (const auto& in : testing::voronoi_regressions()) {
+    SCOPED_TRACE(in.name);
+    expect_front_half(in.sites);
+    if (in.sites.size() <= 40) EXPECT_EQ(certificate_error(in.sites, fortune(in.sites)), "");
   }
 }
 
