@@ -54,6 +54,7 @@ extern "C" {
 
 #include "t2/kernel/filter.hpp"
 #include "t2/gen/generate.hpp"
+#include "t2/kernel/error.hpp"
 #include "t2/hull.hpp"
 #include "t2/hull3d.hpp"
 #include "t2/kernel/incircle.hpp"
@@ -114,15 +115,22 @@ std::vector<t2::Point3> make_input3(const std::string& input, std::size_t n, std
   return P;
 }
 
-// The segments of INPUT segments: n segments with exactly n proper crossings and no other
-// contact, every endpoint with w = 1.
+// The segments of INPUT: for `segments`, n segments with exactly n proper crossings and no other
+// contact; else the connected or degenerate kinds of t2::gen (polygon-edges, segment-grid,
+// segments-through-point). Every endpoint has w = 1.
 std::vector<t2::Segment> make_segments(const std::string& input, std::size_t n, std::uint64_t seed) {
-  if (input != "segments") throw Usage("intersect takes the input segments, not " + input);
+  t2::gen::Kind k{};
+  try {
+    k = t2::gen::kind_from_name(input);
+  } catch (const t2::BadInput&) {
+    k = t2::gen::Kind::uniform;
+  }
+  if (!t2::gen::is_segment_kind(k)) throw Usage("intersect takes a kind of segments, not " + input);
   t2::gen::Options o;
   o.n = n;
   o.crossings = n;
   o.seed = seed;
-  return t2::gen::segments(o);
+  return t2::gen::segments(k, o);
 }
 
 // The hull by qhull (libqhull_r, default options) of points of dimension `dim` (coordinates one
@@ -356,6 +364,12 @@ int work(int argc, char** argv) {
   const t2cli::algorithms::Problem* pr = t2cli::algorithms::find_problem(problem);
   if (pr == nullptr) throw Usage("unknown problem " + problem);
   t2cli::algorithms::BenchInput in;  // "owned" hands its points to the result
+  // CGAL reports shared endpoints by its own rule (its `report_endpoints` flag: none, or every
+  // endpoint), not t2's (an endpoint on two or more segments): its count is t2's only where no
+  // two segments touch at an endpoint.
+  if (problem == "intersect" && impl == "cgal" && input != "segments")
+    throw Usage("cgal counts shared endpoints by another rule than t2: time it on --input segments "
+                "(on " + input + ", --vs intersect-circular,intersect-brute)");
   if (pr->input == t2cli::algorithms::Input::space)
     in.points3 = make_input3(input, n, seed);
   else if (pr->input == t2cli::algorithms::Input::segments)

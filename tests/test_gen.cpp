@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <set>
 #include <tuple>
 
 #include "t2/gen/generate.hpp"
 #include "t2/gen/random.hpp"
+#include "t2/intersect/intersections.hpp"
+#include "t2/kernel/orient.hpp"
 #include "testing.hpp"
 
 namespace t2 {
@@ -26,7 +29,7 @@ gen::Options opts(std::size_t n, std::uint64_t seed = 7) {
 }
 
 TEST(Gen, NamesRoundTrip) {
-  EXPECT_EQ(gen::all_kinds().size(), 21u);
+  EXPECT_EQ(gen::all_kinds().size(), 24u);
   for (Kind k : gen::all_kinds()) EXPECT_EQ(gen::kind_from_name(gen::name(k)), k);
   EXPECT_THROW(gen::kind_from_name("gaussian"), BadInput);
 }
@@ -305,6 +308,50 @@ TEST(Gen, SegmentsHaveExactlyTheCrossingsAsked) {
   gen::Options o = opts(4);
   o.crossings = 5;
   EXPECT_THROW(gen::segments(o), BadInput);
+}
+
+// The connected and degenerate kinds: what each promises, exactly, and the sweep equal to the
+// brute force on them.
+TEST(Gen, ConnectedAndDegenerateSegmentKinds) {
+  const auto edges = gen::segments(Kind::polygon_edges, opts(100));
+  ASSERT_EQ(edges.size(), 100u);
+  for (std::size_t k = 0; k < 100; ++k) {
+    const std::size_t next = k % 16 == 15 ? k - 15 : k + 1;  // round each 16-gon
+    if (next < 100) EXPECT_TRUE(edges[k].target() == edges[next].source()) << k;
+  }
+  const auto grid = gen::segments(Kind::segment_grid, opts(100));
+  ASSERT_EQ(grid.size(), 100u);
+  std::set<std::array<double, 4>> distinct;
+  for (const auto& s : grid) {
+    const double dx = s.target().x() - s.source().x(), dy = s.target().y() - s.source().y();
+    EXPECT_TRUE((dx == 1 && dy == 0) || (dx == 0 && dy == 1));
+    EXPECT_EQ(s.source().x(), std::floor(s.source().x()));
+    EXPECT_EQ(s.source().y(), std::floor(s.source().y()));
+    distinct.insert({s.source().x(), s.source().y(), s.target().x(), s.target().y()});
+  }
+  EXPECT_EQ(distinct.size(), 100u);
+  const auto star = gen::segments(Kind::segments_through_point, opts(60));
+  ASSERT_EQ(star.size(), 60u);
+  const Point origin(1, 0, 0);
+  for (const auto& s : star) {
+    EXPECT_EQ(orient(s.source(), s.target(), origin), ZERO);
+    EXPECT_LT(q(s.source().x()) * q(s.target().x()) + q(s.source().y()) * q(s.target().y()), 0);  // between
+  }
+  const auto at = intersections(star, IntersectAlgorithm::sweep);
+  ASSERT_EQ(at.size(), 1u);  // the origin, on all 60
+  EXPECT_EQ(at[0].segments.size(), 60u);
+  for (const auto* S : {&edges, &grid, &star}) {
+    const auto a = intersections(*S, IntersectAlgorithm::sweep), b = intersections(*S, IntersectAlgorithm::brute);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_TRUE(a[k].point == b[k].point);
+      EXPECT_EQ(a[k].segments, b[k].segments);
+    }
+  }
+  EXPECT_THROW(gen::segments(Kind::uniform, opts(10)), BadInput);
+  for (Kind k : gen::all_kinds())
+    EXPECT_EQ(gen::is_segment_kind(k), k == Kind::segments || k == Kind::polygon_edges || k == Kind::segment_grid ||
+                                           k == Kind::segments_through_point);
 }
 
 }  // namespace

@@ -15,13 +15,17 @@ const std::vector<std::string>& input_names() {
   static const std::vector<std::string> names = {"uniform",  "disk",     "polygon-interior", "normal",
                                                  "clustered", "kuzmin",  "circle",           "segment",
                                                  "boundary", "grid",     "duplicates", "cube",
-                                                 "sphere",   "segments"};
+                                                 "sphere",   "segments", "polygon-edges", "segment-grid",
+                                                 "segments-through-point"};
   return names;
 }
 
 t2cli::algorithms::Input input_of(const std::string& input) {
   using t2cli::algorithms::Input;
-  return input == "cube" || input == "sphere" ? Input::space : input == "segments" ? Input::segments : Input::plane;
+  if (input == "cube" || input == "sphere") return Input::space;
+  for (const char* s : {"segments", "polygon-edges", "segment-grid", "segments-through-point"})
+    if (input == s) return Input::segments;
+  return Input::plane;
 }
 
 std::optional<std::filesystem::path> find_worker() {

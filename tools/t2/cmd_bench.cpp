@@ -155,8 +155,9 @@ int bench(Options o) {
   if (input_of(o.input) != pr->input)
     throw UsageError(fmt::format("--input {}: {} takes {}", o.input, o.algo,
                                  pr->input == Input::space      ? "points of R^3 (cube, sphere)"
-                                 : pr->input == Input::segments ? "segments (segments)"
-                                                                : "points of the plane (not cube, sphere, segments)"));
+                                 : pr->input == Input::segments
+                                     ? "segments (segments, polygon-edges, segment-grid, segments-through-point)"
+                                     : "points of the plane (not cube, sphere, nor a kind of segments)"));
   const std::vector<std::size_t> ns = sizes(o);
   if (ns.front() < 1) throw UsageError("--n must be at least 1");
   Progress::Setting shown{};

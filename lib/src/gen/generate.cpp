@@ -46,6 +46,9 @@ const Info kInfo[] = {
     {Kind::convex_polygon, "convex-polygon", "a convex polygon, vertices exactly on the unit circle"},
     {Kind::monotone_polygon, "monotone-polygon", "an x-monotone polygon"},
     {Kind::segments, "segments", "n segments with exactly --crossings proper crossings"},
+    {Kind::polygon_edges, "polygon-edges", "the edges of random 16-gons: shared endpoints, polygons crossing"},
+    {Kind::segment_grid, "segment-grid", "n unit edges of an m x m integer grid: up to four segments end at a point"},
+    {Kind::segments_through_point, "segments-through-point", "n segments through the origin, exactly: one point on all"},
 };
 
 const Info& info(Kind k) {

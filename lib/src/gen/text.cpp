@@ -41,7 +41,10 @@ std::string to_text(Kind k, const Options& o) {
       for (const auto& p : polygon(k, o)) out += "  " + point_line(p) + "\n";
       return out + "end\n";
     case Kind::segments:
-      for (const auto& s : segments(o))
+    case Kind::polygon_edges:
+    case Kind::segment_grid:
+    case Kind::segments_through_point:
+      for (const auto& s : segments(k, o))
         out += fmt::format("segment\n  {}\n  {}\nend\n", point_line(s.source()), point_line(s.target()));
       return out;
     default:

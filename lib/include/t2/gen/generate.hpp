@@ -44,6 +44,9 @@ enum class Kind {
   convex_polygon,    ///< a convex polygon with vertices exactly on the unit circle
   monotone_polygon,  ///< an x-monotone polygon
   segments,          ///< segments with exactly `crossings` proper crossings
+  polygon_edges,     ///< the edges of random 16-gons: connected (shared endpoints), polygons crossing
+  segment_grid,      ///< n unit edges of an m×m integer grid: up to four segments end at a point
+  segments_through_point,  ///< n segments through the origin (exactly): one point on all of them
 };
 
 /// The parameters of a generator.
@@ -76,6 +79,11 @@ Polygon polygon(Kind k, const Options& o);
 /// Segments (kind segments): n segments with exactly o.crossings proper crossings, no other
 /// contact.
 std::vector<Segment> segments(const Options& o);
+/// The n segments of a segment kind (segments, polygon-edges, segment-grid,
+/// segments-through-point); throws `BadInput` for another kind.
+std::vector<Segment> segments(Kind k, const Options& o);
+/// Is k a kind of segments?
+bool is_segment_kind(Kind k);
 
 /// The file `t2 gen` writes: a comment naming the command, then the scene (or `x y z` lines).
 std::string to_text(Kind k, const Options& o);
