@@ -15,7 +15,8 @@ namespace t2::testing {
 
 inline const std::vector<HullAlgorithm>& all_algorithms() {
   static const std::vector<HullAlgorithm> a{HullAlgorithm::automatic, HullAlgorithm::merge, HullAlgorithm::jarvis,
-                                            HullAlgorithm::graham,    HullAlgorithm::quickhull, HullAlgorithm::monotone};
+                                            HullAlgorithm::graham,    HullAlgorithm::quickhull, HullAlgorithm::monotone,
+                                            HullAlgorithm::chan};
   return a;
 }
 
