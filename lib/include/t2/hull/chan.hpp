@@ -70,7 +70,8 @@ std::size_t tangent(std::span<const Point> P, const std::vector<std::size_t>& C,
 /// Chan's algorithm on the points P[i], i in `idx`, in `chart`: the strict hull vertices,
 /// counter-clockwise from the first in the chart's order (as `graham` and `jarvis`). O(n log h)
 /// for h hull vertices. The trace hears each vertex of each round's wrap (a round that fails
-/// is followed by one that starts again from the first vertex).
+/// is followed by one that starts again from the first vertex), or Graham's steps when a round
+/// has one group (m ≥ n: that group's hull is the answer).
 template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                               Tr&& trace = {}) {
@@ -83,6 +84,7 @@ std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::s
   const std::size_t n = idx.size();
   //> chan-wrap
   for (std::size_t m = 4;; m = m >= n / m ? n : m * m) {  // m = 2^(2^t), at most n
+    if (m >= n) return graham<K>(P, idx, chart, trace);     // one group: its hull is all
     std::vector<std::vector<std::size_t>> groups;           // each group's hull
     for (std::size_t g = 0; g < n; g += m) {
       const std::vector<std::size_t> part(idx.begin() + static_cast<std::ptrdiff_t>(g),
@@ -109,7 +111,6 @@ std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::s
       if (q == u || K::equal(P[q], P[start])) return hull;  // the wrap closed
       u = q;
     }
-    if (m >= n) return hull;  // not reached: h ≤ n (a guard, as in `jarvis`)
   }  // h > m: square m
   //< chan-wrap
 }
