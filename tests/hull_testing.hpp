@@ -20,6 +20,16 @@ inline const std::vector<HullAlgorithm>& all_algorithms() {
   return a;
 }
 
+/// Hull traits that count their orientation tests (the algorithms are templates on them).
+struct CountingTraits {
+  static inline long calls = 0;  ///< the tests so far
+  static Sign orient(const Point& p, const Point& q, const Point& r) {
+    ++calls;
+    return t2::orient(p, q, r);
+  }
+  static bool equal(const Point& p, const Point& q) { return p == q; }
+};
+
 /// True when a and b are the same cyclic sequence of points of T² (equality in T²).
 template <class P>
 bool same_cycle(const std::vector<P>& a, const std::vector<P>& b) {

@@ -19,6 +19,7 @@ namespace {
 
 using gen::Kind;
 using testing::at;
+using testing::CountingTraits;
 using testing::same_cycle;
 using testing::text;
 
@@ -155,15 +156,6 @@ TEST(Chan, EqualsTheBruteForceOnTinySets) {
 // A hull of h exact circle points with many points inside: the rounds stop at the first
 // m = 2^(2^t) ≥ h, and the count of orientation tests stays below 12 n log₂ h (h = 40 and h = 4,
 // where the first round, m = 4, is the last).
-struct CountingTraits {
-  static inline long calls = 0;
-  static Sign orient(const Point& p, const Point& q, const Point& r) {
-    ++calls;
-    return t2::orient(p, q, r);
-  }
-  static bool equal(const Point& p, const Point& q) { return p == q; }
-};
-
 struct VertexTrace {
   std::vector<std::size_t> vertices;
   void operator()(const trace::Report& r) {

@@ -47,9 +47,9 @@ std::size_t tangent(std::span<const Point> P, const std::vector<std::size_t>& C,
     if (K::equal(c, u)) return false;
     if (K::equal(d, u)) return true;
     const Sign s = K::orient(u, c, d);
-    return s != ZERO ? s > 0 : order.farther(u, d, c);  // on one ray: the farther first
+    return s != ZERO ? s > 0 : order.farther(u, d, c);  // one ray: the farther first
   };
-  const auto down = [&](std::size_t i) { return before(i + 1, i); };  // the key falls on edge i
+  const auto down = [&](std::size_t i) { return before(i + 1, i); };  // edge i falls
   const bool down0 = down(0);
   // after(i): c_i is the least key or comes after it along 1 … k−1 (monotone in i)
   const auto after = [&](std::size_t i) {
@@ -76,20 +76,20 @@ template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                               Tr&& trace = {}) {
   const ChartOrder<K> order{chart};
-  std::vector<std::size_t> hull;
-  if (idx.empty()) return hull;
-  std::size_t start = idx[0];
-  for (std::size_t i : idx)
-    if (order.less(P[i], P[start])) start = i;  // the first in the order is a vertex
   const std::size_t n = idx.size();
+  if (n == 0) return {};
+  const std::size_t start = *std::min_element(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+    return order.less(P[a], P[b]);  // the first in the chart's order is a vertex
+  });
+  std::vector<std::size_t> hull;
   //> chan-wrap
   for (std::size_t m = 4;; m = m >= n / m ? n : m * m) {  // m = 2^(2^t), at most n
-    if (m >= n) return graham<K>(P, idx, chart, trace);     // one group: its hull is all
-    std::vector<std::vector<std::size_t>> groups;           // each group's hull
+    if (m >= n) return graham<K>(P, idx, chart, trace);  // one group: its hull is all
+    std::vector<std::vector<std::size_t>> groups;        // each group's hull
     for (std::size_t g = 0; g < n; g += m) {
-      const std::vector<std::size_t> part(idx.begin() + static_cast<std::ptrdiff_t>(g),
-                                          idx.begin() + static_cast<std::ptrdiff_t>(std::min(n, g + m)));
-      groups.push_back(graham<K>(P, part, chart));
+      const auto first = idx.begin() + static_cast<std::ptrdiff_t>(g);
+      const auto last = idx.begin() + static_cast<std::ptrdiff_t>(std::min(n, g + m));
+      groups.push_back(graham<K>(P, std::vector<std::size_t>(first, last), chart));
     }
     hull.clear();
     std::size_t u = start;
@@ -106,9 +106,11 @@ std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::s
           continue;
         }
         const Sign s = K::orient(P[u], P[q], P[c]);
-        if (s < 0 || (s == 0 && order.farther(P[u], P[q], P[c]))) q = c;  // Jarvis's rule
+        if (s < 0 || (s == 0 && order.farther(P[u], P[q], P[c])))
+          q = c;  // Jarvis's rule
       }
-      if (q == u || K::equal(P[q], P[start])) return hull;  // the wrap closed
+      if (q == u || K::equal(P[q], P[start]))
+        return hull;  // the wrap closed
       u = q;
     }
   }  // h > m: square m
