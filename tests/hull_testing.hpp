@@ -15,9 +15,20 @@ namespace t2::testing {
 
 inline const std::vector<HullAlgorithm>& all_algorithms() {
   static const std::vector<HullAlgorithm> a{HullAlgorithm::automatic, HullAlgorithm::merge, HullAlgorithm::jarvis,
-                                            HullAlgorithm::graham,    HullAlgorithm::quickhull, HullAlgorithm::monotone};
+                                            HullAlgorithm::graham,    HullAlgorithm::quickhull, HullAlgorithm::monotone,
+                                            HullAlgorithm::chan};
   return a;
 }
+
+/// Hull traits that count their orientation tests (the algorithms are templates on them).
+struct CountingTraits {
+  static inline long calls = 0;  ///< the tests so far
+  static Sign orient(const Point& p, const Point& q, const Point& r) {
+    ++calls;
+    return t2::orient(p, q, r);
+  }
+  static bool equal(const Point& p, const Point& q) { return p == q; }
+};
 
 /// True when a and b are the same cyclic sequence of points of T² (equality in T²).
 template <class P>

@@ -117,14 +117,7 @@ TEST(HullCgal, TinyInputs) {
 
 // A kernel that counts its orientation tests, and a trace that records the steps: the
 // algorithms are templates on both, and give the same answer through them.
-struct CountingTraits {
-  static inline long calls = 0;
-  static Sign orient(const Point& p, const Point& q, const Point& r) {
-    ++calls;
-    return t2::orient(p, q, r);
-  }
-  static bool equal(const Point& p, const Point& q) { return p == q; }
-};
+using testing::CountingTraits;
 
 struct Recorder {
   std::vector<trace::Event> steps;

@@ -10,7 +10,7 @@ class HullCli : public CliTest {};
 TEST_F(HullCli, IndicesCounterClockwiseOfTheScenePoints) {
   // A square with a point inside, one inside an edge, a duplicate corner and a labelled corner.
   write("sq.t2", "0 0\n2 0\n1 1\n1 0\n2 4 0\nlabel D 0 2\n2 2\n");
-  for (const char* a : {"automatic", "merge", "jarvis", "graham", "quickhull", "monotone"}) {
+  for (const char* a : {"automatic", "merge", "jarvis", "graham", "quickhull", "monotone", "chan"}) {
     const Result r = t2(std::string("hull sq.t2 --algorithm ") + a);
     EXPECT_EQ(r.status, 0) << a << r.err;
     // The cycle 0 1 6 5 (or 0 4 6 5: 4 is 1 again), from any start.

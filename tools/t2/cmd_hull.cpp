@@ -80,7 +80,7 @@ Action setup(Arguments& app) {
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_option("--algorithm", o->algorithm,
                  "automatic (default: Akl-Toussaint + monotone chain on front-only input, else\n"
-                 "merge), merge, jarvis, graham, quickhull or monotone")
+                 "merge), merge, jarvis, graham, quickhull, monotone or chan")
       ->type_name("A")
       ->check(IsMember(names_of(t2::hull_algorithms)));
   add_drawing_options(app, o->drawing, "the points and the hull");

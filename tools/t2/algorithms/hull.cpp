@@ -102,6 +102,14 @@ T2_ALGORITHM({.name = named(HullAlgorithm::monotone),
               .run = run(HullAlgorithm::monotone),
               .time = timed(HullAlgorithm::monotone)});
 
+T2_ALGORITHM({.name = named(HullAlgorithm::chan),
+              .problem = "hull",
+              .summary = "Chan's algorithm, O(n log h): Graham on groups, Jarvis with tangents",
+              .title = "Chan's algorithm",
+              .run = run(HullAlgorithm::chan),
+              .time = timed(HullAlgorithm::chan),
+              .peers = {"graham", "cgal"}});
+
 T2_ALGORITHM({.name = named(HullAlgorithm::quickhull),
               .problem = "hull",
               .summary = "Quickhull, O(n log n) on average",

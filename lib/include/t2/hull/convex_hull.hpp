@@ -1,6 +1,6 @@
 #pragma once
 /// @file convex_hull.hpp
-/// @brief `t2::convex_hull`: the hull of points of T², by any of the five algorithms.
+/// @brief `t2::convex_hull`: the hull of points of T², by any of the six algorithms.
 
 #include <algorithm>
 #include <numeric>
@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "t2/hull/chan.hpp"
 #include "t2/hull/graham.hpp"
 #include "t2/hull/jarvis.hpp"
 #include "t2/hull/traits.hpp"
@@ -25,13 +26,15 @@ enum class HullAlgorithm {
   graham,     ///< Graham's scan, O(n log n)
   quickhull,  ///< Quickhull, O(n log n) on average
   monotone,   ///< Andrew's monotone chain, O(n log n)
+  chan,       ///< Chan's algorithm: Graham on groups, Jarvis with tangents, O(n log h)
 };
 
 /// Every hull algorithm, in the order of `t2 hull --help`: the list the command line's choices
 /// come from (with `name`).
 inline constexpr HullAlgorithm hull_algorithms[] = {HullAlgorithm::automatic, HullAlgorithm::merge,
                                                     HullAlgorithm::jarvis,    HullAlgorithm::graham,
-                                                    HullAlgorithm::quickhull, HullAlgorithm::monotone};
+                                                    HullAlgorithm::quickhull, HullAlgorithm::monotone,
+                                                    HullAlgorithm::chan};
 
 /// The name of an algorithm ("merge", "jarvis", ...), as `t2 hull --algorithm` takes it.
 inline std::string_view name(HullAlgorithm a) {
@@ -42,6 +45,7 @@ inline std::string_view name(HullAlgorithm a) {
     case HullAlgorithm::graham: return "graham";
     case HullAlgorithm::quickhull: return "quickhull";
     case HullAlgorithm::monotone: return "monotone";
+    case HullAlgorithm::chan: return "chan";
   }
   return "?";
 }
@@ -69,6 +73,7 @@ std::vector<std::size_t> convex_hull(std::span<const Point> P, HullAlgorithm a =
     case HullAlgorithm::jarvis: return jarvis<K>(P, idx, chart, trace);
     case HullAlgorithm::graham: return graham<K>(P, idx, chart, trace);
     case HullAlgorithm::quickhull: return quickhull<K>(P, idx, chart, trace);
+    case HullAlgorithm::chan: return chan<K>(P, idx, chart, trace);
     default: return monotone_chain<K>(P, std::move(idx), chart, trace);
   }
 }
