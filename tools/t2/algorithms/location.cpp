@@ -175,6 +175,24 @@ t2::Scene query_overlay(const Points& P, const t2::Point& q, std::size_t k, Subd
   return o;
 }
 
+// The answer of the animation as a scene: the triangle holding each query that lies inside one,
+// in the order of the queries (the untraced walk's answers), and the queries.
+t2::Scene walk_scene(const Points& P) {
+  const auto S = animation_map(P, "points");
+  const std::vector<t2::Point> Q = animation_queries(P);
+  t2::Scene out;
+  for (std::size_t k = 0; k < Q.size(); ++k) {
+    const Location l = t2::walk(*S, Q[k], S->org(0));
+    if (l.kind == Location::Kind::face) {
+      t2::ScenePolygon g;
+      for (const std::size_t i : face_triangle(*S, l.face)) g.vertices.push_back(tr::overlay_point(P[i]));
+      out.polygons.push_back(std::move(g));
+    }
+    tr::add_point(out, Q[k], fmt::format("q{}", k));
+  }
+  return out;
+}
+
 // The walk (Algorithm 15) recorded: the map and the queries (lecture), each region entered and
 // each vertex stood at (debugging), each query's path and answer (lecture), all the answers.
 void record_walk(const Points& P, const std::string& name, tr::Recording& rec) {
@@ -192,8 +210,7 @@ void record_walk(const Points& P, const std::string& name, tr::Recording& rec) {
   m.triangles = T;
   for (std::size_t k = 0; k < Q.size(); ++k) tr::add_point(m.overlay, Q[k], fmt::format("q{}", k));
   rec.add(m);
-  tr::Step last = make_step("answer", "", "triangles");
-  last.triangles = T;
+  tr::Step last = make_step("answer", "", "triangles");  // its triangles: those holding a query
   for (std::size_t k = 0; k < Q.size(); ++k) {
     const t2::Point& q = Q[k];
     std::vector<tr::Tri> path;
@@ -239,6 +256,7 @@ void record_walk(const Points& P, const std::string& name, tr::Recording& rec) {
     rec.add(std::move(s));
     tr::add_point(last.overlay, q, fmt::format("q{}", k));
     last.text += fmt::format("{}q{}: {}", k ? "; " : "The answers: ", k, answer_text(*S, l, last));
+    if (l.kind == Location::Kind::face) last.triangles.push_back(face_triangle(*S, l.face));
   }
   last.text += ".";
   rec.add(std::move(last));
@@ -248,6 +266,7 @@ T2_ALGORITHM({.name = "walk",
               .problem = "locate",
               .summary = "t2::walk: seed 000's Algorithm 15 on the Delaunay triangulation, queries in random order",
               .title = "point location by walking (Algorithm 15) in the points' Delaunay triangulation",
+              .run = walk_scene,
               .record = record_walk,
               .time = [](BenchInput& in) -> Timed { return walk_run(in, false); },
               .peers = {"cgal", "walk-sorted", "cgal-sorted"}});

@@ -158,6 +158,15 @@ void add_window(const t2::ExactIsoRect& r, t2::Scene& o) {
   o.polygons.push_back(std::move(g));
 }
 
+// The answer of the animation as a scene: the points in the window (the untraced report).
+t2::Scene kdtree_scene(const Points& P) {
+  t2::Scene out;
+  if (const auto r = animation_window(P))
+    for (const std::size_t i : t2::KdTree(std::span<const t2::Point>(P)).report(*r))
+      tr::add_point(out, P[i], fmt::format("p{}", i));
+  return out;
+}
+
 // The kd-tree recorded: the splits of each level (lecture), then the window query: each node
 // entered (debugging) and the points reported (the answer).
 void record_kdtree(const Points& P, const std::string& name, tr::Recording& rec) {
@@ -266,6 +275,7 @@ T2_ALGORITHM({.name = "kdtree",
               .problem = "range",
               .summary = "t2::KdTree: a kd-tree per side of T2, O(sqrt n + k) a window (built, then n/10 windows)",
               .title = "range search with a kd-tree: its splits, then the middle half of the points' bounding box",
+              .run = kdtree_scene,
               .record = record_kdtree,
               .time = range_run<t2::KdTree>,
               .peers = {"nanoflann", "rtree", "rangetree"}});
