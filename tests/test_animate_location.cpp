@@ -8,7 +8,8 @@
 // - kdtree: the answer is KdTree::report's untraced answer and the brute force of `contains`;
 //   each split drawn at a level passes through one of that level's splitting points (exact
 //   orient) and runs along the right axis; as many splits as the tree has inner nodes; as many
-//   node steps as KdTree::visits counts;
+//   node steps as KdTree::visits counts; each node's drawn cell holds the points the step names
+//   (exact point-in-polygon of T², closed);
 // - pages of 100 and 200 points weigh at most 1 MB (printed); bad input exits 2 or 3.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/kernel/bbox.hpp"
 #include "t2/kernel/orient.hpp"
+#include "t2/kernel/point_in_polygon.hpp"
 #include "t2/location/walk.hpp"
 #include "t2/range/kdtree.hpp"
 #include "t2/trace/recording.hpp"
@@ -207,9 +209,16 @@ TEST(AnimateKdTree, AnswerIsTheTreesAndBruteForceAndEverySplitPassesThroughItsPo
     std::vector<std::size_t> got = rec.back().points;
     std::sort(got.begin(), got.end());
     EXPECT_EQ(got, brute);
-    std::size_t splits = 0, nodes = 0, objects = 0;
+    std::size_t splits = 0, nodes = 0, objects = 0, cells = 0;
     for (const Step& s : rec.steps()) {
-      if (s.kind == "node") ++nodes;
+      if (s.kind == "node") {
+        ++nodes;
+        if (s.overlay.polygons.size() == 2) {  // the window and the node's cell (not the root's)
+          const Polygon cell = s.overlay.polygons[1].polygon();
+          for (const std::size_t i : s.points) EXPECT_NE(locate(cell, P[i]), NEGATIVE) << s.text << " p" << i;
+          ++cells;
+        }
+      }
       if (s.kind != "level") continue;
       const int depth = std::stoi(s.text.substr(6));
       const Point along = depth % 2 ? Point(0, 1, 0) : Point(0, 0, 1);  // the split's direction
@@ -229,6 +238,7 @@ TEST(AnimateKdTree, AnswerIsTheTreesAndBruteForceAndEverySplitPassesThroughItsPo
     }
     EXPECT_EQ(splits, inner_nodes(T.tree_order(0).size()) + inner_nodes(T.tree_order(1).size()));
     EXPECT_EQ(nodes, T.visits(*r));
+    EXPECT_GT(cells, 0u);
   }
 }
 

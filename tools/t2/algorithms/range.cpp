@@ -142,6 +142,7 @@ void add_cell(const Points& P, int side, const KdCell& c, t2::Scene& o) {
       g.vertices.push_back(tr::overlay_point(on_side(side, drawn(P, side_bound[k]))));
   }
   if (g.vertices.size() > 1 && g.vertices.back().point == g.vertices.front().point) g.vertices.pop_back();
+  if (side) std::reverse(g.vertices.begin(), g.vertices.end());  // the antipode turns it clockwise
   g.style.color = g.style.fill = "#ff7f0e";  // the player's colour of the triangles in focus
   g.style.opacity = 0.3;
   if (g.vertices.size() >= 3) o.polygons.push_back(std::move(g));
