@@ -45,7 +45,13 @@ Action setup(Arguments& app) {
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO (each name means one algorithm everywhere in t2: t2 hull --algorithm, t2 bench,\n"
       "t2 triangulate):\n" +
-      algo_list());
+      algo_list() +
+      "\nWhat the queries are, when the scene has only points: walk locates seven queries in the\n"
+      "Delaunay triangulation of the points, each walk from the same vertex: q0 to q3 drawn\n"
+      "uniformly in the points' bounding box (a fixed seed), q4 the middle point of the file,\n"
+      "q5 the antipode of q0 (on the back) and q6 = [0, 1, 0] on Omega; kdtree builds the tree of\n"
+      "the points and reports those in one window, the middle half of the bounding box of the\n"
+      "front points (of the back points when none is in front).");
   std::vector<std::string> names;
   for (const auto* a : algorithms::animated()) names.push_back(a->name);
   app.add_option("ALGO", o->algo, algorithms::words(names))
@@ -60,7 +66,8 @@ Action setup(Arguments& app) {
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
       "points; delaunay or sec given points off the front side); 3 undefined: the points have no\n"
-      "hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate).");
+      "hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate); walk: no\n"
+      "triangle to locate in; kdtree: every point on Omega.");
   return [o] { return animate(*o); };
 }
 

@@ -9,6 +9,7 @@
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/point_in_polygon.hpp"
 #include "t2/kernel/segment.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -97,11 +98,27 @@ void cross(const Subdivision& S, Index h, Index& region, Index& entry) {
 // the first point of the segment after `here` on an edge of the region, crossing edges while
 // they are crossed in their interiors. Returns the answer, or none after setting v to the
 // vertex of the segment that the walk reached (the caller goes on in the first state).
+// `from` is the vertex the walk leaves into the region, or none. The hook hears each region
+// entered (Event::enter_region).
+template <class H>
 std::optional<Location> through_regions(const Subdivision& S, const Point& q, const Point& p, Index region,
-                                        Index entry, Mark here, Index& v, std::vector<Index>* crossed) {
+                                        Index entry, Mark here, Index& v, std::vector<Index>* crossed,
+                                        Index from, H& hook) {
   const auto& P = S.points();
   for (;;) {
     if (crossed) crossed->push_back(region);
+    tell(hook, [&] {
+      trace::Report r;
+      r.event = trace::Event::enter_region;
+      r.faces = {region, 0};
+      if (entry != Subdivision::none) {
+        r.at[0] = S.org(entry), r.at[1] = S.dest(entry);
+      } else if (from != Subdivision::none) {
+        r.at[2] = from;
+      }
+      from = Subdivision::none;
+      return r;
+    });
     // A convex triangle (Δ(a, b, c) > 0: the small one of its vertices, not the complement)
     // is left by its edge u → w whose ends the line qp separates, u on the right of qp and w
     // on its left (walk.hpp, "Triangles"); p is inside when on the inner side of u → w.
@@ -173,10 +190,14 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
 }
 
 // The walk's first state, from vertex v of the segment qp (v != p), alternating with the second.
-Location from_vertex(const Subdivision& S, const Point& q, const Point& p, Index v, std::vector<Index>* crossed) {
+// The hook hears each vertex (Event::reach_vertex) and each region entered.
+template <class H>
+Location from_vertex(const Subdivision& S, const Point& q, const Point& p, Index v, std::vector<Index>* crossed,
+                     H& hook) {
   const auto& P = S.points();
   const Point r = detail::off_line_point(q, p);
   for (;;) {
+    tell(hook, trace::Event::reach_vertex, {std::size_t(v)});
     const Point& V = P[v];
     Index region = Subdivision::outside, along = Subdivision::none;
     for (const auto& c : S.corners(v)) {
@@ -193,18 +214,34 @@ Location from_vertex(const Subdivision& S, const Point& q, const Point& p, Index
       continue;
     }
     // In `region`, from V: the first point of the segment after V on one of its edges.
-    if (auto l = through_regions(S, q, p, region, Subdivision::none, mark(V, r, q, p), v, crossed)) return *l;
+    const Index at = v;
+    if (auto l = through_regions(S, q, p, region, Subdivision::none, mark(V, r, q, p), v, crossed, at, hook))
+      return *l;
   }
+}
+
+// walk from a vertex (walk.hpp), telling `hook` (NoTrace: nothing, and no trace code).
+template <class H>
+Location walk_from(const Subdivision& S, const Point& p, Index qv, std::vector<Index>* crossed, H& hook) {
+  const auto& P = S.points();
+  if (p == antipode(P[qv])) qv = S.dest(S.first(S.corners(qv)[0].face) + S.corners(qv)[0].k);
+  const Point& q = P[qv];
+  if (p == q) {
+    tell(hook, trace::Event::reach_vertex, {std::size_t(qv)});
+    return at_vertex(S, qv);
+  }
+  return from_vertex(S, q, p, qv, crossed, hook);
 }
 
 }  // namespace
 
 Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>* crossed) {
-  const auto& P = S.points();
-  if (p == antipode(P[qv])) qv = S.dest(S.first(S.corners(qv)[0].face) + S.corners(qv)[0].k);
-  const Point& q = P[qv];
-  if (p == q) return at_vertex(S, qv);
-  return from_vertex(S, q, p, qv, crossed);
+  NoTrace none;
+  return walk_from(S, p, qv, crossed, none);
+}
+
+Location walk(const Subdivision& S, const Point& p, Index qv, const std::function<void(const trace::Report&)>& hook) {
+  return walk_from(S, p, qv, nullptr, hook);
 }
 
 Location walk(const Subdivision& S, const Point& p, const Point& from, Index face, std::vector<Index>* crossed) {
@@ -212,8 +249,11 @@ Location walk(const Subdivision& S, const Point& p, const Point& from, Index fac
   if (p == antipode(from)) return walk(S, p, S.org(S.first(face)), crossed);
   const Point r = detail::off_line_point(from, p);
   Index v = Subdivision::none;
-  if (auto l = through_regions(S, from, p, face, Subdivision::none, mark(from, r, from, p), v, crossed)) return *l;
-  return from_vertex(S, from, p, v, crossed);
+  NoTrace none;
+  if (auto l = through_regions(S, from, p, face, Subdivision::none, mark(from, r, from, p), v, crossed,
+                               Subdivision::none, none))
+    return *l;
+  return from_vertex(S, from, p, v, crossed, none);
 }
 
 Location locate_brute(const Subdivision& S, const Point& p) {

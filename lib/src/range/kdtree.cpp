@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "answer.hpp"
+#include "t2/trace/hook.hpp"
 #include "window.hpp"
 
 namespace t2 {
@@ -38,7 +39,7 @@ struct Walker {
 
   //> kdtree-query
   void walk(std::size_t lo, std::size_t hi, int depth, unsigned known) {
-    v.enter();
+    v.enter(lo, hi, depth, known);
     if (known == kInside) return v.all(p.data() + lo, p.data() + hi);  // inside: all
     if (hi - lo <= KdTree::kLeaf) {
       for (std::size_t k = lo; k < hi; ++k)
@@ -71,18 +72,44 @@ unsigned root_flags(const Window& w) {
 
 struct Counter {
   std::size_t n = 0, nodes = 0;
-  void enter() { ++nodes; }
+  void enter(std::size_t, std::size_t, int, unsigned) { ++nodes; }
   void all(const DrawnPoint* b, const DrawnPoint* e) { n += static_cast<std::size_t>(e - b); }
   void one(const DrawnPoint&) { ++n; }
 };
 
 struct Reporter {
   std::vector<std::size_t>& out;
-  void enter() {}
+  void enter(std::size_t, std::size_t, int, unsigned) {}
   void all(const DrawnPoint* b, const DrawnPoint* e) {
     for (; b != e; ++b) out.push_back(b->index);
   }
   void one(const DrawnPoint& q) { out.push_back(q.index); }
+};
+
+// The reporter that tells a hook each node entered (Event::kd_enter) and each point reported
+// (Event::kd_report), in input indices (kdtree.hpp).
+struct KdTracer {
+  const std::vector<DrawnPoint>& p;
+  std::size_t side;
+  const std::function<void(const trace::Report&)>& hook;
+  std::vector<std::size_t>& out;
+  void enter(std::size_t lo, std::size_t hi, int depth, unsigned known) {
+    trace::Report r;
+    r.event = trace::Event::kd_enter;
+    r.faces = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi)};
+    if (hi - lo > KdTree::kLeaf) r.at[0] = p[lo + (hi - lo) / 2].index;
+    r.at[1] = side;
+    r.at[2] = static_cast<std::size_t>(depth);
+    r.sign = known == kInside ? POSITIVE : ZERO;
+    hook(r);
+  }
+  void all(const DrawnPoint* b, const DrawnPoint* e) {
+    for (; b != e; ++b) one(*b);
+  }
+  void one(const DrawnPoint& q) {
+    out.push_back(q.index);
+    hook(trace::about(trace::Event::kd_report, {q.index}));
+  }
 };
 
 }  // namespace
@@ -116,6 +143,15 @@ std::vector<std::size_t> KdTree::report(const ExactIsoRect& r) const {
   return range::report_in(r, omega_, [this](const ExactBBox& b, std::vector<std::size_t>& out) {
     Reporter rep{out};
     walk(b, rep);
+  });
+}
+
+std::vector<std::size_t> KdTree::report(const ExactIsoRect& r,
+                                        const std::function<void(const trace::Report&)>& hook) const {
+  return range::report_in(r, omega_, [&](const ExactBBox& b, std::vector<std::size_t>& out) {
+    const Window w(b);
+    KdTracer t{side_[w.side], static_cast<std::size_t>(w.side), hook, out};
+    walk(b, t);
   });
 }
 

@@ -32,10 +32,12 @@
 /// shorter than a half turn: after it leaves by an edge, it stays on that edge's outer side.
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "t2/location/subdivision.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -78,6 +80,18 @@ Location at_edge(const Subdivision& S, Subdivision::Index h);
 /// non-convex face can be entered once per edge it has, O(e²) in the worst case.
 Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
               std::vector<Subdivision::Index>* crossed = nullptr);
+
+/// The same walk, telling `hook` (trace/hook.hpp) each vertex of the segment it stands at
+/// (`Event::reach_vertex`: its start, and each vertex the segment passes through) and each
+/// region it enters (`Event::enter_region`: the region, and the edge crossed or the vertex
+/// left), in the order the walk meets them; the answer is the untraced walk's. Only this
+/// overload carries trace code; the one above has none.
+/// @param S the subdivision
+/// @param p the query point
+/// @param q the starting vertex (an index into S.points())
+/// @param hook hears the reports
+Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
+              const std::function<void(const trace::Report&)>& hook);
 
 /// Locates p by walking from the point `from`, which must be strictly inside face `face` (the
 /// last answer of a run of queries, say), along the segment to p; when p = ¬from it starts

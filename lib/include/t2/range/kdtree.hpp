@@ -17,6 +17,7 @@
 /// 15 proves that O(√m) nodes are visited besides those reported.
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "t2/kernel/isorect.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/range/drawn.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -42,6 +44,14 @@ class KdTree {
   /// The indices i with contains(r, points[i]), ascending. O(√n + k log k) for k answers (the
   /// tree reports in O(√n + k); the sort is the k log k).
   std::vector<std::size_t> report(const ExactIsoRect& r) const;
+  /// The same report, telling `hook` (trace/hook.hpp) each node the query enters
+  /// (`Event::kd_enter`: its positions in `tree_order`, its depth and splitting point, and
+  /// whether its region lies inside r) and each point of the tree it reports (`Event::kd_report`),
+  /// in the order of the walk; the points of Ω in r are in the answer only. Only this overload
+  /// carries trace code; the one above has none.
+  /// @param r the closed rectangle
+  /// @param hook hears the reports
+  std::vector<std::size_t> report(const ExactIsoRect& r, const std::function<void(const trace::Report&)>& hook) const;
   /// The tree's nodes and leaves a query of r enters (the quantity the √n bound counts).
   std::size_t visits(const ExactIsoRect& r) const;
   /// The points of side s (0 front, 1 back) in tree order: the implicit tree of the file

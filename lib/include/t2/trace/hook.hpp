@@ -35,7 +35,8 @@ class Triangulation;
 namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
-/// Welzl's smallest enclosing circle the last two.
+/// Welzl's smallest enclosing circle the next two, the walk of point location two more and the
+/// kd-tree's query the last two.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -61,6 +62,19 @@ enum class Event {
   enclose,        ///< the disk is now the one of at[0..2]: a circumcircle, a diameter (at[2]
                   ///< none) or one point (at[1] none)
   in_disk,        ///< is at[0] in the last `enclose`'s closed disk? `sign` answers (POSITIVE in)
+  // Point location (location/walk.hpp); vertices are indices of the subdivision's points(),
+  // which are the input points when the map was made from index cycles into them.
+  enter_region,   ///< the walk enters region faces[0] (a face, or Subdivision::outside): across
+                  ///< the edge at[0] → at[1] (vertices), or from vertex at[2], or (all none)
+                  ///< from its starting point inside the face
+  reach_vertex,   ///< the walk stands at vertex at[0]: its start, or a vertex its segment
+                  ///< passes through
+  // Range search (range/kdtree.hpp); positions are into KdTree::tree_order(at[1]).
+  kd_enter,       ///< the query enters the kd-tree node of the positions [faces[0], faces[1])
+                  ///< of side at[1] at depth at[2]; at[0] is its splitting point (input
+                  ///< index), none for a leaf; `sign` POSITIVE when its region lies inside the
+                  ///< window (reported whole, no test)
+  kd_report,      ///< the query reports point at[0] (input index): it lies in the window
 };
 
 /// One event, as the algorithm reports it (see the file comment).
