@@ -128,7 +128,7 @@ void figures(const std::filesystem::path& dir) {
     for (const auto& p : P) f.add(p, dr::Style().size(1.5));
     dr::PlaneView unit;
     unit.half_width = 1.15;
-    out.save(f, "layers", unit, sphere);
+    out.save(f, "layers", unit, dr::facing(P));  // from above the disk: every layer in full
   }
   {  // Kernels: a star polygon (bounded) and the notched half-plane (unbounded, corners on Ω).
     t2::gen::Options o;
