@@ -269,10 +269,11 @@ void figures(const std::filesystem::path& dir) {
   // antipodal pair and the half great circle between the antipodes are drawn by
   // chapter10::add_antipodal_lunes. Only the points the caption names are labelled, each at a
   // fixed side of its dot (NaN: the first side that is clear). The sphere looks at the
-  // antipodal edges when there are any, else at the points, from latitude `lat`.
+  // antipodal edges when there are any, else at the points (or from longitude `lon`), from
+  // latitude `lat`.
   using Labels = std::vector<std::pair<std::size_t, double>>;
   auto t2_figure = [&](const std::vector<Point>& P, const std::string& name, const dr::PlaneView& pv,
-                       const Labels& labels, double dot, double lat) {
+                       const Labels& labels, double dot, double lat, double lon = std::nan("")) {
     const Triangulation tr = t2::delaunay(P);
     dr::Figure f;
     for (const auto& t : tr.finite_triangles()) {
@@ -296,6 +297,7 @@ void figures(const std::filesystem::path& dir) {
       f.add(P[k], dr::Style().size(dot).label("p" + std::to_string(k)).label_angle(angle).layer(2));
     dr::SphereView v = dr::facing(middles.empty() ? P : middles, sphere);
     if (middles.empty()) v.lat = lat;
+    if (!std::isnan(lon)) v.lon = lon;
     out.save(f, name, pv, v);
   };
   {
@@ -318,7 +320,7 @@ void figures(const std::filesystem::path& dir) {
         Point(-1, 0.2, 0.9),           Point(-1, -0.9, 0.1),           Point::at_infinity(1, 0.36),
         Point::at_infinity(0.5, 0.87), Point::at_infinity(-0.17, 1),   Point::at_infinity(-0.87, 0.5)};
     pv.half_width = 1.6;
-    t2_figure(Z, "omega", pv, {{11, 90}, {14, 180}}, 3, 40);
+    t2_figure(Z, "omega", pv, {{11, 90}, {14, 180}}, 3, 25, -95);  // facing the gap p14 .. p11
   }
   chapter10::more_figures(out);
   std::cerr << out.summary() << "\n";
