@@ -215,7 +215,7 @@ void figures(const std::filesystem::path& dir) {
     for (const Point& p : P) f.add(p);
     dr::PlaneView pv;
     pv.half_width = 3;
-    out.save(f, "parabola", pv, sphere);
+    out.save(f, "parabola", pv, dr::facing(P, sphere));
   }
   std::cerr << out.summary() << "\n";
 }

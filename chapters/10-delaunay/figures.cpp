@@ -51,12 +51,6 @@ std::set<Edge> edges_of(const t2::Triangulation& tr, const std::vector<std::size
   return out;
 }
 
-// A view that looks at data near the front pole turned so that +y is up, as in the plane.
-dr::SphereView from_above(dr::SphereView v) {
-  v.lon = -90;
-  return v;
-}
-
 // The flip of section 2: the quadrilateral a b d c, its diagonal b c illegal because d is
 // inside the circle of a b c, and the other diagonal a d.
 void flip_figure(dr::FigurePairs& out) {
@@ -76,7 +70,7 @@ void flip_figure(dr::FigurePairs& out) {
   f.add(d, dr::Style().label("d").label_angle(60));
   dr::PlaneView pv;
   pv.half_width = 1.4;
-  out.save(f, "flip", pv, from_above(dr::facing({a, b, c, d})));
+  out.save(f, "flip", pv, dr::facing({a, b, c, d}));
 }
 
 // Section 6: the merge of divide and conquer on sixteen points. The halves' triangulations, the
@@ -122,7 +116,7 @@ void merge_figure(dr::FigurePairs& out) {
             dr::Style().color(pal::light_grey).width(1).dash({2, 3}).layer(-1));
   dr::PlaneView pv;
   pv.half_width = 1.7;
-  out.save(f, "merge", pv, from_above(dr::facing(P)));
+  out.save(f, "merge", pv, dr::facing(P));
 }
 
 // Section 1: a band face (a2, a1, b) of the two-sided Delaunay triangulation, the front hull edge

@@ -242,7 +242,7 @@ void figures(const std::filesystem::path& dir) {
     for (int k = 0; k < 4; ++k) f.add(Q[k], dr::Style().label("q" + std::to_string(k)));
     dr::PlaneView pv;
     pv.half_width = 3.5;
-    out.save(f, "heights", pv, sphere);
+    out.save(f, "heights", pv, dr::facing(Q, sphere));
   }
   {  // Forty points: the sweep's triangulation and the Delaunay triangulation after the flips.
     t2::gen::Options o;
@@ -260,7 +260,7 @@ void figures(const std::filesystem::path& dir) {
         f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
               dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08));
       for (const Point& p : P) f.add(p, dr::Style().size(2.5));
-      out.save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
+      out.save(f, flipped ? "lawson-after" : "lawson-before", pv, dr::facing(P, sphere));
     }
   }
   // Seed 000, figures 5.21 and 5.18 redrawn with the library's T² Delaunay triangulation: points

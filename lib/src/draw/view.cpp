@@ -42,6 +42,10 @@ SphereView facing(const std::vector<Point>& pts, SphereView base) {
   if (!(r > 1e-9 * static_cast<double>(pts.size()))) return base;
   base.lat = std::asin(std::clamp(m.z / r, -1.0, 1.0)) / kDeg;
   base.lon = std::atan2(m.y, m.x) / kDeg;
+  if (std::abs(base.lat) > 80) {  // near a pole: the planar model's turn, not the mean's whim
+    base.lat = base.lat > 0 ? 90 : -90;
+    base.lon = -90;
+  }
   return base;
 }
 
