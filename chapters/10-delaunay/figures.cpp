@@ -143,13 +143,13 @@ void band_figure(dr::FigurePairs& out) {
   f.add(std::vector<Point>{notE, P[a2], P[a1], E, P[b]},
         dr::Style().color(pal::orange).width(1.8).fill(pal::orange).fill_opacity(0.18));
   f.add(std::vector<Point>{P[a2], P[a1], P[b]},
-        dr::Style().color(pal::blue).width(2).fill(pal::blue).fill_opacity(0.2).layer(1));
+        dr::Style().color(pal::blue).width(2.4).layer(1));
   for (std::size_t i = 0; i < P.size(); ++i) f.add(P[i], dr::Style().size(3).layer(2));
   f.add(P[a1], dr::Style().size(3).label("a1").layer(2));
   f.add(P[a2], dr::Style().size(3).label("a2").layer(2));
   f.add(P[b], dr::Style().size(3).label("b").layer(2));
-  f.add(E, dr::Style().size(3).label("E").color(pal::orange).layer(2));
-  f.add(notE, dr::Style().size(3).label("~E").color(pal::orange).layer(2));
+  f.add(E, dr::Style().size(3).label("E").label_angle(180).color(pal::orange).layer(2));
+  f.add(notE, dr::Style().size(3).label("~E").label_angle(0).color(pal::orange).layer(2));
   dr::PlaneView pv;
   pv.half_width = 2;
   out.save(f, "band", pv, dr::facing({P[a1], P[a2], P[b]}));
