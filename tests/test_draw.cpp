@@ -87,6 +87,51 @@ TEST(DrawView, TheFrontSideIsTheUpperHemisphere) {
   EXPECT_NEAR(std::hypot(q.x, q.y), 1, 1e-14);
 }
 
+// facing() looks straight at the data: a cap of points around a direction is seen around the
+// middle of the picture (the cap's axis at depth 1, the picture's centre), whatever the side.
+TEST(DrawView, FacingLooksStraightAtTheMeanOfThePoints) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for (int i = 0; i < 200; ++i) {
+    const Point c = random_point(rng);
+    const V3 axis = unit({c.x(), c.y(), c.w()});
+    if (std::fabs(axis.z) > 0.95) continue;  // near a pole: the rule of the next test
+    std::vector<Point> cap;  // c and its mirror images about it: their mean is c's direction
+    for (int k = 0; k < 4; ++k) {
+      const double dw = u(rng), dx = u(rng), dy = u(rng);
+      const double n = std::sqrt(c.w() * c.w() + c.x() * c.x() + c.y() * c.y());
+      cap.push_back(Point(c.w() / n + dw, c.x() / n + dx, c.y() / n + dy));
+      cap.push_back(Point(c.w() / n - dw, c.x() / n - dx, c.y() / n - dy));
+    }
+    V3 m{0, 0, 0};
+    for (const Point& p : cap) {
+      const V3 s = unit({p.x(), p.y(), p.w()});
+      m = {m.x + s.x, m.y + s.y, m.z + s.z};
+    }
+    const dr::SphereView v = dr::facing(cap);
+    EXPECT_NEAR(dot(eye_of(v.lat, v.lon), unit(m)), 1, 1e-12) << to_string(c);
+  }
+}
+
+TEST(DrawView, FacingNearAPoleIsTurnedAsThePlanarModel) {
+  const std::vector<Point> front{Point::cartesian(0.1, 0.05), Point::cartesian(-0.2, 0.1), Point::cartesian(0.05, -0.1)};
+  const dr::SphereView v = dr::facing(front);
+  EXPECT_EQ(v.lat, 90);
+  EXPECT_EQ(v.lon, -90);
+  const dr::Vec2 x = v.project(Point::cartesian(1, 0)), y = v.project(Point::cartesian(0, 1));
+  EXPECT_GT(x.x, 0);  // x to the right
+  EXPECT_NEAR(x.y, 0, 1e-12);
+  EXPECT_GT(y.y, 0);  // y up
+  EXPECT_NEAR(y.x, 0, 1e-12);
+  dr::SphereView base;
+  base.lat = 12;
+  base.size = 200;
+  const dr::SphereView same = dr::facing({Point::cartesian(1, 1), antipode(Point::cartesian(1, 1))}, base);
+  EXPECT_EQ(same.lat, 12);  // balanced points: the base view, unchanged
+  EXPECT_EQ(same.lon, base.lon);
+  EXPECT_EQ(dr::facing({Point::cartesian(1, 1)}, base).size, 200);
+}
+
 TEST(DrawView, AGreatCircleProjectsToAnEllipseTangentToTheOutline) {
   std::mt19937_64 rng(2);
   const int n = 300 * testing::scale();

@@ -188,7 +188,13 @@ void figures(const std::filesystem::path& dir) {
     f.add(t2::antipode(B[3]), dr::Style().label("~p3").color(pal::red));
     dr::PlaneView small;
     small.half_width = 3;
-    out.save(f, "no-hull", small, sphere);
+    // The sphere from above the triangle (which spans more than a hemisphere's worth of view),
+    // tilted towards -y so that p3, straight below ~p3, shows below the edge p0 p1 rather than
+    // hidden behind ~p3.
+    dr::SphereView over;
+    over.lat = 60;
+    over.lon = -90;
+    out.save(f, "no-hull", small, over);
     dr::Figure g;  // an antipodal pair: the segment between them is undefined
     const Point p = Point::cartesian(1, 0.5), q = t2::antipode(Point::cartesian(1, 0.5));
     g.add(p, dr::Style().label("p"));
@@ -209,7 +215,7 @@ void figures(const std::filesystem::path& dir) {
     for (const Point& p : P) f.add(p);
     dr::PlaneView pv;
     pv.half_width = 3;
-    out.save(f, "parabola", pv, sphere);
+    out.save(f, "parabola", pv, dr::facing(P, sphere));
   }
   std::cerr << out.summary() << "\n";
 }

@@ -83,7 +83,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(at(P, t2::melkman(P)), green);
     f.add(P, dr::Style().width(1.4));
     for (std::size_t i = 0; i < P.size(); ++i) f.add(P[i], dr::Style().label("v" + std::to_string(i)));
-    out.save(f, "melkman", plane, sphere);
+    out.save(f, "melkman", plane, dr::facing(P, sphere));
   }
   {  // The calipers on the hexagon: every antipodal pair, the diameter, the narrowest strip.
     const auto H = hexagon();
@@ -99,7 +99,7 @@ void figures(const std::filesystem::path& dir) {
     f.add(edge, dr::Style().color(pal::orange).width(1.2));
     f.add(t2::join(H[w->vertex], t2::meet(edge, t2::omega<double>())), dr::Style().color(pal::orange).width(1.2));
     for (std::size_t i = 0; i < H.size(); ++i) f.add(H[i], dr::Style().label("p" + std::to_string(i)));
-    out.save(f, "calipers", plane, sphere);
+    out.save(f, "calipers", plane, dr::facing(H, sphere));
   }
   {  // The diameter across Ω: the front-back pair nearest as drawn.
     const std::vector<Point> M = front_and_back();
@@ -128,7 +128,7 @@ void figures(const std::filesystem::path& dir) {
     for (const auto& p : P) f.add(p, dr::Style().size(1.5));
     dr::PlaneView unit;
     unit.half_width = 1.15;
-    out.save(f, "layers", unit, sphere);
+    out.save(f, "layers", unit, dr::facing(P));  // from above the disk: every layer in full
   }
   {  // Kernels: a star polygon (bounded) and the notched half-plane (unbounded, corners on Ω).
     t2::gen::Options o;

@@ -2,6 +2,8 @@
 // winged-edge structure of the seed's cube, gift wrapping against the incremental hull, the
 // rule for degenerate input, and the lifting map that turns a lower hull into a Delaunay
 // triangulation; the figures of the chapter.
+#include "figures.hpp"
+
 #include <t2/draw/polyhedron.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/hull3d.hpp>
@@ -142,14 +144,7 @@ void lifting(const std::filesystem::path& dir) {
             << "\n";
   //< lifting
   require(lower.size() == flips.size(), "lifting == delaunay");
-  std::vector<Point3> L;
-  for (const auto& p : A) {  // z scaled by 1/8 for the picture (an affine map: the same hull)
-    const Point3 q = t2::lift(p);
-    L.push_back({q.x, q.y, q.z / 8});
-  }
-  dr::View3 v;
-  v.elevation = -20;  // from below: the lower hull faces the viewer
-  dr::save_polyhedron(t2::hull_polyhedron(L), v, dir / "lifted.svg", L);
+  chapter08::lifted_figure(A, dir);  // z scaled by 1/8 for the picture (an affine map: the same hull)
   dr::Figure f;  // the triangulation in the plane
   for (const auto& t : lower)
     f.add(std::vector<t2::Point>{A[t[0]], A[t[1]], A[t[2]]}, dr::Style().color(pal::blue).fill(pal::pale_blue));
@@ -173,5 +168,7 @@ int main(int argc, char** argv) {
   three_algorithms(dir);
   degenerate(dir);
   lifting(dir);
+  chapter08::gift_wrap_figure(dir);
+  chapter08::horizon_figure(dir);
   return 0;
 }

@@ -3,6 +3,8 @@
 // convex quadrilaterals); legal edges; Lawson's flips and how many; the randomized incremental
 // construction and its flips per point; divide and conquer gives the same triangles; the
 // figures of the chapter in both models.
+#include "figures.hpp"
+
 #include <t2/t2.hpp>
 #include <t2/gen/generate.hpp>
 #include <t2/triangulation/delaunay.hpp>
@@ -240,7 +242,7 @@ void figures(const std::filesystem::path& dir) {
     for (int k = 0; k < 4; ++k) f.add(Q[k], dr::Style().label("q" + std::to_string(k)));
     dr::PlaneView pv;
     pv.half_width = 3.5;
-    out.save(f, "heights", pv, sphere);
+    out.save(f, "heights", pv, dr::facing(Q, sphere));
   }
   {  // Forty points: the sweep's triangulation and the Delaunay triangulation after the flips.
     t2::gen::Options o;
@@ -258,25 +260,45 @@ void figures(const std::filesystem::path& dir) {
         f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
               dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08));
       for (const Point& p : P) f.add(p, dr::Style().size(2.5));
-      out.save(f, flipped ? "lawson-after" : "lawson-before", pv, sphere);
+      out.save(f, flipped ? "lawson-after" : "lawson-before", pv, dr::facing(P, sphere));
     }
   }
   // Seed 000, figures 5.21 and 5.18 redrawn with the library's T² Delaunay triangulation: points
   // on both sides, and the antipode of a hull vertex added to front points (a flat face).
-  auto t2_figure = [&](const std::vector<Point>& P, const std::string& name, const dr::PlaneView& pv) {
+  // Faces with vertices on both sides (the band across Ω) are shaded orange; the lunes of an
+  // antipodal pair and the half great circle between the antipodes are drawn by
+  // chapter10::add_antipodal_lunes. Only the points the caption names are labelled, each at a
+  // fixed side of its dot (NaN: the first side that is clear). The sphere looks at the
+  // antipodal edges when there are any, else at the points (or from longitude `lon`), from
+  // latitude `lat`.
+  using Labels = std::vector<std::pair<std::size_t, double>>;
+  auto t2_figure = [&](const std::vector<Point>& P, const std::string& name, const dr::PlaneView& pv,
+                       const Labels& labels, double dot, double lat, double lon = std::nan("")) {
     const Triangulation tr = t2::delaunay(P);
     dr::Figure f;
-    const dr::Style st = dr::Style().color(pal::blue).fill(pal::blue).fill_opacity(0.08);
     for (const auto& t : tr.finite_triangles()) {
-      bool flat = false;
-      for (int k = 0; k < 3; ++k) flat = flat || P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]);
-      if (!flat) f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]}, st);
+      bool flat = false, front = false, back = false;
+      for (int k = 0; k < 3; ++k) {
+        flat = flat || P[t[k]] == t2::antipode(P[t[(k + 1) % 3]]);
+        front = front || P[t[k]].w() > 0;
+        back = back || P[t[k]].w() < 0;
+      }
+      const char* fill = front && back ? pal::orange : pal::blue;
+      if (!flat)
+        f.add(std::vector<Point>{P[t[0]], P[t[1]], P[t[2]]},
+              dr::Style().color(pal::blue).width(1.2).fill(fill).fill_opacity(0.1));
       for (int k = 0; k < 3 && flat; ++k)  // a flat face: only its edges between non-antipodes
         if (!(P[t[k]] == t2::antipode(P[t[(k + 1) % 3]])))
-          f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(pal::red).width(1.6));
+          f.segment(P[t[k]], P[t[(k + 1) % 3]], dr::Style().color(pal::blue).width(1.2));
     }
-    for (std::size_t k = 0; k < P.size(); ++k) f.add(P[k], dr::Style().label("p" + std::to_string(k)));
-    out.save(f, name, pv, sphere);
+    const std::vector<Point> middles = chapter10::add_antipodal_lunes(f, tr, P);
+    for (const Point& p : P) f.add(p, dr::Style().size(dot).layer(2));
+    for (const auto& [k, angle] : labels)
+      f.add(P[k], dr::Style().size(dot).label("p" + std::to_string(k)).label_angle(angle).layer(2));
+    dr::SphereView v = dr::facing(middles.empty() ? P : middles, sphere);
+    if (middles.empty()) v.lat = lat;
+    if (!std::isnan(lon)) v.lon = lon;
+    out.save(f, name, pv, v);
   };
   {
     t2::gen::Options o;
@@ -285,11 +307,11 @@ void figures(const std::filesystem::path& dir) {
     o.back = 0.4;
     dr::PlaneView pv;
     pv.half_width = 1.6;
-    t2_figure(t2::gen::points(t2::gen::Kind::both_sides, o), "both-sides", pv);
+    t2_figure(t2::gen::points(t2::gen::Kind::both_sides, o), "both-sides", pv, {}, 2.5, 35);
     const std::vector<Point> A = {Point::cartesian(-1, -1), Point::cartesian(1.5, -1), Point::cartesian(0.5, 1.5),
                                   Point::cartesian(0, 0), t2::antipode(Point::cartesian(1.5, -1))};
     pv.half_width = 2.5;
-    t2_figure(A, "antipode", pv);
+    t2_figure(A, "antipode", pv, {{0, -90}, {1, -60}, {2, 0}, {3, 135}, {4, 30}}, 3.5, 0);
     // Section 8: front points, back points and four directions on Ω (data/examples/omega.t2).
     const std::vector<Point> Z = {
         Point::cartesian(0, 0),        Point::cartesian(0.6, 0.2),     Point::cartesian(-0.3, 0.5),
@@ -298,8 +320,9 @@ void figures(const std::filesystem::path& dir) {
         Point(-1, 0.2, 0.9),           Point(-1, -0.9, 0.1),           Point::at_infinity(1, 0.36),
         Point::at_infinity(0.5, 0.87), Point::at_infinity(-0.17, 1),   Point::at_infinity(-0.87, 0.5)};
     pv.half_width = 1.6;
-    t2_figure(Z, "omega", pv);
+    t2_figure(Z, "omega", pv, {{11, 90}, {14, 180}}, 3, 25, -95);  // facing the gap p14 .. p11
   }
+  chapter10::more_figures(out);
   std::cerr << out.summary() << "\n";
 }
 

@@ -32,6 +32,23 @@ Vec3 SphereView::eye() const {
           std::sin(lat * kDeg)};
 }
 
+SphereView facing(const std::vector<Point>& pts, SphereView base) {
+  Vec3 m{0, 0, 0};
+  for (const Point& p : pts) {
+    const Vec3 s = on_sphere(p);
+    m = {m.x + s.x, m.y + s.y, m.z + s.z};
+  }
+  const double r = std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
+  if (!(r > 1e-9 * static_cast<double>(pts.size()))) return base;
+  base.lat = std::asin(std::clamp(m.z / r, -1.0, 1.0)) / kDeg;
+  base.lon = std::atan2(m.y, m.x) / kDeg;
+  if (std::abs(base.lat) > 80) {  // near a pole: the planar model's turn, not the mean's whim
+    base.lat = base.lat > 0 ? 90 : -90;
+    base.lon = -90;
+  }
+  return base;
+}
+
 std::pair<Vec3, Vec3> SphereView::screen_axes() const {
   const Vec3 right{-std::sin(lon * kDeg), std::cos(lon * kDeg), 0};
   const Vec3 up{-std::sin(lat * kDeg) * std::cos(lon * kDeg), -std::sin(lat * kDeg) * std::sin(lon * kDeg),

@@ -48,21 +48,11 @@ std::vector<bool> named(const std::string& text, std::size_t n) {
   return out;
 }
 
-// The spherical view looking straight at the data: its eye is the mean of the points on the
-// sphere (the default view when they balance out).
+// The spherical view looking straight at the data (the default view when they balance out).
 dr::SphereView sphere_view(const std::vector<Point>& P, int size) {
   dr::SphereView v;
   v.size = size;
-  dr::Vec3 m{0, 0, 0};
-  for (const auto& p : P) {
-    const dr::Vec3 s = dr::on_sphere(p);
-    m = {m.x + s.x, m.y + s.y, m.z + s.z};
-  }
-  const double r = std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
-  if (!(r > 1e-9 * static_cast<double>(P.size()))) return v;
-  v.lat = std::asin(std::clamp(m.z / r, -1.0, 1.0)) * 180 / std::numbers::pi;
-  v.lon = std::atan2(m.y, m.x) * 180 / std::numbers::pi;
-  return v;
+  return dr::facing(P, v);
 }
 
 dr::PlaneView plane_view(const std::vector<Point>& P) {

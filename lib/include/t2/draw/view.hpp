@@ -69,6 +69,14 @@ struct SphereView {
   double depth(const Vec3& s) const;
 };
 
+/// The view of the sphere that looks straight at the points `pts`: `base` with its latitude and
+/// longitude turned to the mean of their unit vectors (`on_sphere`), so that the data sits in the
+/// middle of the picture. A mean within 10° of a pole is rounded to the pole, seen with longitude
+/// −90°: the picture is then turned as the planar model's, x to the right (and, from above, y
+/// up). When the points balance out (a mean of length below 1e-9 per point), or `pts` is empty,
+/// `base` is returned unchanged.
+SphereView facing(const std::vector<Point>& pts, SphereView base = {});
+
 /// The projected great circle of a line: an ellipse centred at the origin.
 struct Ellipse {
   Vec2 major;        ///< unit vector along the major axis (the semi-major axis is 1)
