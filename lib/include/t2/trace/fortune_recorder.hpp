@@ -216,11 +216,11 @@ class FortuneRecorder {
     };
     for (std::size_t k = 0; k < beach.size(); ++k) {
       const std::size_t i = beach[k];
-      if (!(Y(i) < L)) {  // an arc of zero width: the vertical from its site up to the beach line
-        const double top = k > 0 && Y(beach[k - 1]) < L ? height(beach[k - 1], X(i))
+      if (!(Y(i) < L)) {  // an arc of zero width: the vertical from its site down to the beach line
+        const double end = k > 0 && Y(beach[k - 1]) < L ? height(beach[k - 1], X(i))
                            : k + 1 < beach.size() && Y(beach[k + 1]) < L ? height(beach[k + 1], X(i))
-                                                                          : L + 2 * h_;
-        out.push_back({Point(1, X(i), Y(i)), Point(1, X(i), std::min(top, L + 2 * h_))});
+                                                                          : L - 2 * h_;
+        out.push_back({Point(1, X(i), Y(i)), Point(1, X(i), std::max(end, L - 2 * h_))});
         out.emplace_back();
         continue;
       }
