@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -110,7 +111,7 @@ std::vector<std::vector<Point>> inputs() {
 }
 
 TEST(FortuneTrace, ChangesNothingAndSweepsUpExactly) {
-  int circles = 0, alarms = 0, tests = 0;
+  int circles = 0, alarms = 0, tests = 0, splits = 0;
   for (const auto& P : inputs()) {
     SCOPED_TRACE(fmt::format("{} sites", P.size()));
     std::vector<Report> reports;
@@ -122,6 +123,7 @@ TEST(FortuneTrace, ChangesNothingAndSweepsUpExactly) {
     const FortuneDiagram plain = fortune(P);
     ASSERT_TRUE(same(traced, plain));
     std::size_t sites = 0, made = 0;
+    std::vector<std::size_t> seen;  // the sites swept so far
     const Report* last = nullptr;
     for (std::size_t k = 0; k < reports.size(); ++k) {
       const Report& r = reports[k];
@@ -129,6 +131,20 @@ TEST(FortuneTrace, ChangesNothingAndSweepsUpExactly) {
       if (r.event == Event::site) {
         ++sites;
         EXPECT_NE(std::find(beach[k].begin(), beach[k].end(), r.at[0]), beach[k].end()) << "the new arc is there";
+        if (r.at[1] != Report::none) {  // the arc it splits is highest above it (brute force, rationals)
+          const Rational a = ex(P[r.at[0]]), L = ey(P[r.at[0]]);
+          auto above = [&](std::size_t i) {  // the parabola of site i at x = a, sweep y = L
+            const Rational dx = a - ex(P[i]), y = ey(P[i]);
+            return Rational((dx * dx + y * y - L * L) / (2 * (y - L)));
+          };
+          std::optional<Rational> top;
+          for (std::size_t i : seen)
+            if (ey(P[i]) < L && (!top || above(i) > *top)) top = above(i);
+          ASSERT_TRUE(top.has_value());
+          EXPECT_EQ(above(r.at[1]), *top) << "p" << r.at[0] << " splits the arc of p" << r.at[1];
+          ++splits;
+        }
+        seen.push_back(r.at[0]);
       }
       if (r.event == Event::circle) {
         ++made;
@@ -155,6 +171,7 @@ TEST(FortuneTrace, ChangesNothingAndSweepsUpExactly) {
   EXPECT_GT(circles, 100);
   EXPECT_GT(alarms, 10);
   EXPECT_GT(tests, 100);
+  EXPECT_GT(splits, 200);
 }
 
 /// The recording of t2::fortune on P, and the untraced answer.
