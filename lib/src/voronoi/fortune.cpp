@@ -15,6 +15,7 @@
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/sign_sqrt.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -138,21 +139,26 @@ struct SweepVertex {
   Index a, b, c;
 };
 
-/// The sweep's state.
+/// The sweep's state; `hook` hears its events (trace/hook.hpp: site, circle, schedule,
+/// false_alarm, breakpoint), in input indices, with the beach line as the report's chain. For
+/// `NoTrace` no report is built: the untraced sweep has no trace code.
+template <class H>
 class Sweep {
  public:
-  Sweep(const std::vector<Site>& sites, std::span<const Point> points) : s_(sites), p_(points) {}
+  Sweep(const std::vector<Site>& sites, std::span<const Point> points, H& hook) : s_(sites), p_(points), hook_(hook) {}
 
   //> fortune-sweep
   void run() {
     std::size_t i = 1;
     beach_.start(beach_.make(0));
-    Arc* last = beach_.root;
+    Arc* last = head_ = beach_.root;  // the leftmost arc: never removed (no left neighbour)
+    report(trace::Event::site, {s_[0].id});
     for (; i < s_.size() && s_[i].y == s_[0].y; ++i) {  // the first row: vertical rays
       Arc* n = beach_.make(int(i));
       beach_.insert_after(last, n);
       n->edge = new_edge(last->site, n->site), n->end = 1;
       last = n;
+      report(trace::Event::site, {s_[i].id});
     }
     while (i < s_.size() || !queue_.empty()) {
       if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top()], s_[i]) < 0)) {
@@ -174,22 +180,38 @@ class Sweep {
     edges.push_back({s_[p].id, s_[q].id});
     return int(edges.size()) - 1;
   }
+  /// Tells the hook event e about the sites `at` (input indices), with the beach line.
+  void report(trace::Event e, std::initializer_list<std::size_t> at, Sign sign = ZERO) {
+    if constexpr (trace::traced<H>) {
+      ids_.clear();
+      for (const Arc* a = head_; a; a = a->next) ids_.push_back(s_[a->site].id);
+      tell(hook_, e, at, ids_, sign);
+    }
+  }
+  /// sign(β − a) of breakpoint_side, told to the hook.
+  Sign side(const Arc* l, const Arc* r, const Site& s) {
+    const Sign g = breakpoint_side(s_[l->site], s_[r->site], s);
+    if constexpr (trace::traced<H>) report(trace::Event::breakpoint, {s_[l->site].id, s_[r->site].id, s.id}, g);
+    return g;
+  }
   /// The arc above the abscissa of site s (the right one on a breakpoint).
-  Arc* locate(const Site& s) const {
+  Arc* locate(const Site& s) {
     Arc* n = beach_.root;
     for (;;) {
-      if (n->prev && breakpoint_side(s_[n->prev->site], s_[n->site], s) > 0) n = n->left;
-      else if (n->next && breakpoint_side(s_[n->site], s_[n->next->site], s) <= 0) n = n->right;
+      if (n->prev && side(n->prev, n, s) > 0) n = n->left;
+      else if (n->next && side(n, n->next, s) <= 0) n = n->right;
       else return n;
     }
   }
   void drop_event(Arc* a) {
-    if (a->event >= 0) ev_[a->event].valid = false, a->event = -1;
+    if (a->event < 0) return;
+    Event& e = ev_[a->event];
+    e.valid = false, a->event = -1;
+    if constexpr (trace::traced<H>) report(trace::Event::false_alarm, {e.a->id, e.b->id, e.c->id});
   }
   /// A site event: the arc above splits into two around the new arc.
   void insert(int site) {
     Arc* a = locate(s_[site]);
-    drop_event(a);
     Arc* n = beach_.make(site);
     Arc* b = beach_.make(a->site);
     beach_.insert_after(a, n);
@@ -197,6 +219,8 @@ class Sweep {
     const int e = new_edge(a->site, site);
     n->edge = e, n->end = 0;
     b->edge = e, b->end = 1;
+    report(trace::Event::site, {s_[site].id, s_[a->site].id});
+    drop_event(a);  // after the split: the arcs' events are kept on the arcs, untouched by it
     check(a);
     check(b);
   }
@@ -214,6 +238,7 @@ class Sweep {
     r->edge = g, r->end = 1;
     m->event = -1;
     beach_.erase(m);
+    report(trace::Event::circle, {s_[l->site].id, s_[m->site].id, s_[r->site].id});
     drop_event(l);
     drop_event(r);
     check(l);
@@ -229,6 +254,7 @@ class Sweep {
     ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
     m->event = int(ev_.size()) - 1;
     queue_.push(m->event);
+    report(trace::Event::schedule, {a.id, b.id, c.id});
   }
   struct Later {
     const std::deque<Event>* ev;
@@ -239,6 +265,9 @@ class Sweep {
   };
   const std::vector<Site>& s_;
   std::span<const Point> p_;
+  H& hook_;
+  Arc* head_ = nullptr;
+  std::vector<std::size_t> ids_;  // the beach line in input indices, when traced
   detail::BeachLine beach_;
   std::deque<Event> ev_;
   std::priority_queue<int, std::vector<int>, Later> queue_{Later{&ev_}};
@@ -257,7 +286,11 @@ int find(std::vector<int>& up, int v) {
 
 }  // namespace
 
-FortuneDiagram fortune(std::span<const Point> points) {
+namespace {
+
+/// Fortune's sweep telling `hook` (NoTrace: nothing).
+template <class H>
+FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
   FortuneDiagram out;
   out.sites.assign(points.begin(), points.end());
   std::vector<Site> s;
@@ -280,7 +313,7 @@ FortuneDiagram fortune(std::span<const Point> points) {
   std::sort(out.duplicates.begin(), out.duplicates.end());
   out.first.push_back(0);
   if (u.size() < 2) return out;
-  Sweep sweep(u, points);
+  Sweep<H> sweep(u, points, hook);
   sweep.run();
   // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
   // Both ends of an edge between s and t are circles through s and t (the edge's breakpoint
@@ -353,6 +386,17 @@ FortuneDiagram fortune(std::span<const Point> points) {
     }
   }
   return out;
+}
+
+}  // namespace
+
+FortuneDiagram fortune(std::span<const Point> points) {
+  NoTrace none;
+  return sweep_sites(points, none);
+}
+
+FortuneDiagram fortune(std::span<const Point> points, const std::function<void(const trace::Report&)>& hook) {
+  return sweep_sites(points, hook);
 }
 
 }  // namespace t2

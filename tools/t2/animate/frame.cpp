@@ -24,6 +24,7 @@ const char* const kHull = "#2ca02c";
 const char* const kFocus = "#d62728";
 const char* const kTouched = "#ff7f0e";
 const char* const kCircle = "#9467bd";
+const char* const kCurve = "#17becf";
 constexpr int kSize = 360;  // each model's picture, in SVG units (the page scales it to its width)
 
 // A segment of T², unless it is undefined (equal or antipodal ends): then nothing.
@@ -90,6 +91,8 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
   over.circle = dr::Style().color(kCircle).width(1.6).dash({5, 3}).layer(1);
   over.point = dr::Style().color(kCircle).size(3.5).layer(5);
   dr::add_scene(f, s.overlay, over);
+  for (const auto& c : s.curves)  // sampled curves (a beach line): drawing only
+    if (c.size() >= 2) f.polyline(c, dr::Style().color(kCurve).width(1.8).layer(1));
   std::vector<Point> chain;
   for (std::size_t i : s.chain) chain.push_back(P[i]);
   const dr::Style ch = dr::Style().color(s.closed ? kHull : kChain).width(2.4).layer(2);

@@ -35,8 +35,9 @@ class Triangulation;
 namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
-/// Welzl's smallest enclosing circle the next two, the walk of point location two more and the
-/// kd-tree's query the last two.
+/// Welzl's smallest enclosing circle the next two, the walk of point location two more, the
+/// kd-tree's query two more, and Fortune's sweep the last five (its `chain` is the beach line
+/// after the event: the sites of its arcs left to right, input indices, a site once per arc).
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -75,6 +76,17 @@ enum class Event {
                   ///< index), none for a leaf; `sign` POSITIVE when its region lies inside the
                   ///< window (reported whole, no test)
   kd_report,      ///< the query reports point at[0] (input index): it lies in the window
+  site,           ///< Fortune: the sweep line reaches site at[0] (y = its y); its arc splits the
+                  ///< arc of at[1] (none: at[0] is in the first row, a new arc on the right)
+  circle,         ///< Fortune: the arc of at[1] between the arcs of at[0] and at[2] shrinks to a
+                  ///< point: a Voronoi vertex at the centre of their circle, the sweep line at
+                  ///< its top
+  schedule,       ///< Fortune: the circle event of at[0..2] (the arc of at[1]) joins the queue
+  false_alarm,    ///< Fortune: the circle event of at[0..2] leaves the queue unprocessed: the arc
+                  ///< of at[1] or a neighbour changed first
+  breakpoint,     ///< Fortune: where is site at[2] against the breakpoint of the arcs of at[0]
+                  ///< (left) and at[1] (right)? `sign` is sign(breakpoint's x − the site's x)
+                  ///< (POSITIVE: the site is left of it)
 };
 
 /// One event, as the algorithm reports it (see the file comment).

@@ -13,7 +13,8 @@
 /// in-circle test, a sweep line, a Voronoi vertex, an intersection point, a kd-tree split — is
 /// not an input point: it goes into the step's `overlay`, a `t2::Scene` (kernel/scene.hpp) of
 /// exact kernel objects (points, segments, polygons, lines, circles by centre and boundary
-/// point, each with its style and label), drawn over the step's picture.
+/// point, each with its style and label), drawn over the step's picture. A curve the kernel has
+/// no object for (a parabola) goes into `curves`, sampled: drawing only.
 
 #include <array>
 #include <cstddef>
@@ -55,6 +56,9 @@ struct Step {
   std::vector<Tri> touched;         ///< triangles in focus (the two triangles of a flip)
   // What the algorithm constructed, drawn over the picture (the file comment).
   Scene overlay;  ///< constructed geometry: circles, lines, points, segments (empty: none)
+  /// Curves that are not kernel objects (the parabolic arcs of Fortune's beach line), each an
+  /// open polyline of sample points: an approximation, drawn only, never used for a decision.
+  std::vector<std::vector<Point>> curves;
 };
 
 }  // namespace t2::trace

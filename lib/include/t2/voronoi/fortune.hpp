@@ -52,11 +52,13 @@
 /// signs whose interval holds 0 are computed on GMP rationals.
 
 #include <array>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/voronoi/voronoi.hpp"
 
 namespace t2 {
@@ -99,5 +101,14 @@ struct FortuneDiagram {
 /// Fortune's sweep on `sites` (file comment). Throws `Undefined` when a site is not on the front
 /// side (w ≤ 0): the sweep works in the plane of the front side only.
 FortuneDiagram fortune(std::span<const Point> sites);
+
+/// The same, telling `hook` (trace/hook.hpp) each event of the sweep in input indices, with the
+/// beach line after it as the report's chain: `site` (the site and the arc it splits), `circle`
+/// (the three sites whose circle's centre becomes a vertex; the middle arc goes), `schedule` and
+/// `false_alarm` (a circle event queued, and dropped before its time), and each `breakpoint`
+/// comparison of the search for the arc above a site, with its sign. Duplicate sites are
+/// dropped before the sweep and never reported. Only this overload carries trace code; the one
+/// above has none.
+FortuneDiagram fortune(std::span<const Point> sites, const std::function<void(const trace::Report&)>& hook);
 
 }  // namespace t2
