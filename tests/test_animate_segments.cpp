@@ -199,7 +199,8 @@ TEST(AnimateSegments, TheStepsShowWhatTheySay) {
       algorithm(name).record_segments(S, "in.t2", rec);
       const auto answer = std::string(name) == "intersect" ? intersections_sweep(S) : intersections_circular(S);
       ASSERT_EQ(rec.back().kind, "answer");
-      ASSERT_EQ(rec.back().overlay.points.size(), answer.size());
+      ASSERT_EQ(rec.back().overlay.points.size(), answer.size());  // the untraced answer, point by point
+      for (std::size_t k = 0; k < answer.size(); ++k) EXPECT_EQ(rec.back().overlay.points[k].point, to_double(answer[k].point));
       const bool integer = S.size() < 100 && std::all_of(S.begin(), S.end(), [](const Segment& s) {
         return s.source().w() == std::floor(s.source().w()) && s.source().x() == std::floor(s.source().x()) &&
                s.target().x() == std::floor(s.target().x()) && s.target().y() == std::floor(s.target().y()) &&

@@ -31,6 +31,9 @@
 // **Points on M0** are events twice, at 0 and at 2π, each time with part of the segments
 // through them (those that start there, those that end there; a cut segment at both): they are
 // gathered by their exact point and judged once at the end, with every segment through them.
+//
+// Traced (the overload with a hook; `t2 animate intersect-circular`), it tells what sweep.cpp
+// tells, its pieces named by their segments, and first the centre and the cut segments.
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -24,6 +24,10 @@
 // — front, i.e. the first line is below the second right of E, exactly when w > 0). std::set
 // only compares the key being inserted with the elements, and every key inserted at E goes
 // through E; elements are erased by iterator.
+//
+// Traced (the overload with a hook; `t2 animate intersect`), the sweep tells each reported point,
+// the status after each event and each test of two neighbours (trace/hook.hpp), in segment
+// indices; the untraced run is the NoTrace instantiation, without trace code.
 #include <fmt/format.h>
 
 #include <algorithm>
