@@ -65,11 +65,13 @@ inline std::vector<PageStep> page_steps(const std::string& html) {
     style[k] = rule.substr(brace + 1, rule.size() - brace - 2);
   }
   std::vector<PageStep> out;
-  nlohmann::json frame = nlohmann::json::array(), tris = nlohmann::json::array();
+  nlohmann::json frame = nlohmann::json::array(), tris = nlohmann::json::array(), chain = nlohmann::json::array();
+  const bool of_segments = data.value("segments", false);  // its chains are edits too
   for (const auto& s : data.at("steps")) {
     frame = patched(frame, s.at("frame"));
     tris = patched(tris, s.at("triangles"));
     PageStep p{s, "", {}};
+    if (of_segments) p.step["chain"] = chain = patched(chain, s.at("chain"));
     for (const auto& i : frame) {  // each line with its style written out again
       std::string line = data.at("lines").at(i.get<std::size_t>()).get<std::string>();
       if (const auto at = line.find(" class=\"f"); at != std::string::npos) {

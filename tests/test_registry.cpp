@@ -38,13 +38,17 @@ TEST(Registry, EveryEntryIsComplete) {
     ASSERT_NE(pr, nullptr) << "unregistered problem " << a.problem;
     EXPECT_FALSE(a.summary.empty());
     EXPECT_FALSE(a.title.empty());
-    EXPECT_TRUE(a.record || a.time) << "neither animated nor timed: nothing reads it";
+    EXPECT_TRUE(a.animates() || a.time) << "neither animated nor timed: nothing reads it";
     if (a.run) {
       EXPECT_EQ(pr->input, reg::Input::plane) << "only a plane algorithm's answer is a scene";
     }
     if (a.record) {  // an animation's last step is checked against the plain run's scene
       EXPECT_EQ(pr->input, reg::Input::plane);
       EXPECT_TRUE(a.run);
+    }
+    if (a.record_segments) {  // its answer is checked by tests/test_animate_segments.cpp
+      EXPECT_EQ(pr->input, reg::Input::segments);
+      EXPECT_FALSE(a.record) << "one recorder an entry";
     }
     for (const auto& p : a.peers) {
       const reg::Algorithm* other = reg::find(p);
@@ -80,6 +84,7 @@ TEST(Registry, TheAnimationEndsWithTheRunsAnswer) {
   int compared = 0;
   for (gen::Kind k : {gen::Kind::uniform, gen::Kind::both_sides})
     for (const auto* a : reg::animated()) {
+      if (!a->record) continue;  // a recorder of segments (tests/test_animate_segments.cpp)
       SCOPED_TRACE(a->name + (k == gen::Kind::uniform ? " uniform" : " both sides"));
       const std::vector<Point> P = gen::points(k, o);
       trace::Recording rec;
@@ -136,7 +141,7 @@ TEST_F(RegistryCli, TheHelpTextsListTheRegistry) {
   EXPECT_TRUE(has(animate.out, reg::words(animated))) << animate.out;  // ALGO's help line
   EXPECT_TRUE(has(bench.out, "the t2 algorithm: " + reg::words(timed))) << bench.out;
   for (const auto& a : reg::all()) {
-    EXPECT_EQ(has(animate.out, a.name + " ") && has(animate.out, a.summary), bool(a.record)) << a.name;
+    EXPECT_EQ(has(animate.out, a.name + " ") && has(animate.out, a.summary), a.animates()) << a.name;
     if (a.time) {
       EXPECT_TRUE(has(bench.out, a.summary)) << a.name;
     }

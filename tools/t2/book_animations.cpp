@@ -20,7 +20,7 @@ namespace {
 // An algorithm of t2 animate: registered with a recorder (algorithms/registry.hpp).
 bool known_algorithm(const std::string& algo) {
   const algorithms::Algorithm* a = algorithms::find(algo);
-  return a != nullptr && a->record;
+  return a != nullptr && a->animates();
 }
 
 // One command found at `where`: an animation, or a problem.

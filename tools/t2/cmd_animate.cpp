@@ -35,16 +35,17 @@ std::string algo_list() {
 Action setup(Arguments& app) {
   auto o = std::make_shared<Options>();
   app.description(
-      "Runs the algorithm ALGO on the points of the scene file FILE (- for standard input),\n"
-      "recording every step, and writes OUT, one self-contained HTML page (no network) that\n"
+      "Runs the algorithm ALGO on the points of the scene file FILE (- for standard input;\n"
+      "on its segment blocks for intersect and intersect-circular), recording every step, and writes OUT, one self-contained HTML page (no network) that\n"
       "plays the steps back: the planar and the spherical model of each step, the data\n"
-      "structure beside them (Graham's stack, the hull so far, the triangles of a flip), the\n"
+      "structure beside them (Graham's stack, the hull so far, the triangles of a flip, a\n"
+      "sweep's status with its sweep line), the\n"
       "explanation, and controls: previous/next (arrow keys), play/pause (space), speed, a\n"
       "timeline, and the level of detail (lecture: the steps that change the structure;\n"
       "debugging: every test as well). The page starts paused at the first step; its URL\n"
       "fragment #step=N (or last) and &level=debugging open it elsewhere.\n"
       "ALGO (each name means one algorithm everywhere in t2: t2 hull --algorithm, t2 bench,\n"
-      "t2 triangulate):\n" +
+      "t2 triangulate, t2 intersect):\n" +
       algo_list() +
       "\nWhat the queries are, when the scene has only points: walk locates seven queries in the\n"
       "Delaunay triangulation of the points, each walk from the same vertex: q0 to q3 drawn\n"
@@ -58,16 +59,17 @@ Action setup(Arguments& app) {
       ->required()
       ->check([](const std::string& a) {
         const algorithms::Algorithm* x = algorithms::find(a);
-        return x != nullptr && x->record ? std::string()
+        return x != nullptr && x->animates() ? std::string()
                                          : fmt::format("'{}': not an algorithm of t2 animate", a);
       });
   app.add_option("FILE", o->file, "the scene file, - for standard input")->required();
   app.add_option("-o,--output", o->out, "the HTML page to write (atomically)")->required()->type_name("OUT");
   app.footer(
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
-      "points; delaunay or sec given points off the front side); 3 undefined: the points have no\n"
-      "hull (no open hemisphere holds them), or no triangulation of T2 (t2 triangulate); walk: no\n"
-      "triangle to locate in; kdtree: every point on Omega.");
+      "points or 100 segments; delaunay or sec given points off the front side); 3 undefined:\n"
+      "the points have no hull (no open hemisphere holds them), or no triangulation of T2\n"
+      "(t2 triangulate), or intersect (Bentley-Ottmann) was given a segment not in front; walk:\n"
+      "no triangle to locate in; kdtree: every point on Omega.");
   return [o] { return animate(*o); };
 }
 

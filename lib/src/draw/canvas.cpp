@@ -17,8 +17,8 @@ Point drawable(const Point& p) {
 
 double back_opacity(const Style& st) { return std::min(1.0, st.fill_opacity() * 2.5); }
 
-void Canvas::label(Vec2 at, const std::string& t, double angle, double gap, const std::string& colour) {
-  if (!t.empty()) pending.push_back({at, t, angle, gap, colour});
+void Canvas::label(Vec2 at, const std::string& t, double angle, double gap, const std::string& colour, bool halo) {
+  if (!t.empty()) pending.push_back({at, t, angle, gap, colour, halo});
 }
 
 Shape& Canvas::path(const std::vector<Vec2>& pts, Part part, const Style& st, bool closed) {

@@ -30,6 +30,7 @@ struct Pending {
   double angle;
   double gap;
   std::string colour;
+  bool halo = true;  ///< Style::halo
 };
 
 /// Maps model units (y up) to pixels (y down) and collects shapes.
@@ -56,7 +57,7 @@ struct Canvas {
   /// The pixel of a point in model units.
   Vec2 px(Vec2 a) const { return {ox + scale * a.x, oy - scale * a.y}; }
   /// Queues text `t` next to the pixel `at` for placement.
-  void label(Vec2 at, const std::string& t, double angle, double gap, const std::string& colour);
+  void label(Vec2 at, const std::string& t, double angle, double gap, const std::string& colour, bool halo = true);
   /// Queues the label of a styled item anchored at model point `a`.
   void label_of(Vec2 a, const Style& st) { styled.push_back({px(a), &st}); }
   /// A stroked polyline (back parts dashed, whatever the style).

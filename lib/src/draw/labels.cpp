@@ -91,7 +91,7 @@ double clearance(const Canvas& c, const std::vector<Box>& placed, const Box& b) 
 }  // namespace
 
 void place_labels(Canvas& c) {
-  for (const auto& [at, st] : c.styled) c.label(at, st->label(), st->label_angle(), st->size() + 4, st->color());
+  for (const auto& [at, st] : c.styled) c.label(at, st->label(), st->label_angle(), st->size() + 4, st->color(), st->halo());
   c.styled.clear();
   std::vector<Box> placed;
   const double size = 14;
@@ -112,7 +112,7 @@ void place_labels(Canvas& c) {
       }
     }
     placed.push_back(box_for(angle, gap));
-    c.text(L.at, L.text, angle, gap, L.colour, size);
+    c.text(L.at, L.text, angle, gap, L.colour, size).halo = L.halo;
   }
   c.pending.clear();
 }

@@ -134,7 +134,7 @@ class PlanePainter final : public Painter {
 
   void label(const Point& p, const std::string& text, const Style& st) override {
     const Vec2 q = v_.place(p);
-    if (norm(q) <= 1.3) c_.label(c_.px(q), text, st.label_angle(), 2, st.color());
+    if (norm(q) <= 1.3) c_.label(c_.px(q), text, st.label_angle(), 2, st.color(), st.halo());
   }
 
   void t1(double, double, const Style&) override {}  // T¹ is drawn by T1View only

@@ -123,13 +123,14 @@ void paint(cairo_t* cr, const std::vector<Shape>& shapes, double dx, double dy, 
         if (s.halign == 0) x -= ext.x_advance / 2;
         if (s.halign == 1) x -= ext.x_advance;
         x = std::max(2.0, std::min(x, width - ext.x_advance - 2));  // keep it inside the picture
-        // A white halo keeps labels readable over lines.
-        cairo_move_to(cr, x, s.pts[0].y);
-        cairo_text_path(cr, s.text.c_str());
-        cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
-        cairo_set_line_width(cr, 3);
-        cairo_set_dash(cr, nullptr, 0, 0);
-        cairo_stroke(cr);
+        if (s.halo) {  // a white halo keeps labels readable over lines
+          cairo_move_to(cr, x, s.pts[0].y);
+          cairo_text_path(cr, s.text.c_str());
+          cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+          cairo_set_line_width(cr, 3);
+          cairo_set_dash(cr, nullptr, 0, 0);
+          cairo_stroke(cr);
+        }
         cairo_move_to(cr, x, s.pts[0].y);
         set_rgb(cr, s.stroke.empty() ? "#000000" : s.stroke, s.opacity);
         cairo_show_text(cr, s.text.c_str());

@@ -97,7 +97,7 @@ class SpherePainter final : public Painter {
   }
 
   void label(const Point& p, const std::string& text, const Style& st) override {
-    c_.label(c_.px(v_.project(on_sphere(p))), text, st.label_angle(), 2, st.color());
+    c_.label(c_.px(v_.project(on_sphere(p))), text, st.label_angle(), 2, st.color(), st.halo());
   }
 
   void t1(double, double, const Style&) override {}  // T¹ is drawn by T1View only

@@ -31,6 +31,9 @@
 // **Points on M0** are events twice, at 0 and at 2π, each time with part of the segments
 // through them (those that start there, those that end there; a cut segment at both): they are
 // gathered by their exact point and judged once at the end, with every segment through them.
+//
+// Traced (the overload with a hook; `t2 animate intersect-circular`), it tells what sweep.cpp
+// tells, its pieces named by their segments, and first the centre and the cut segments.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -44,6 +47,7 @@
 #include "t2/kernel/join_meet.hpp"
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/kernel/orient.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 // Named: a unity build (test.sh) shares one translation unit between this file and the
@@ -94,10 +98,23 @@ struct KeyLess {
   }
 };
 
+/// Tells `tr` the reported point ip (`Event::found`).
+template <class H>
+void tell_found(const IntersectionPoint& ip, H& tr) {
+  tell(tr, [&] {
+    trace::Report r = trace::about(trace::Event::found, {});
+    r.point = &ip.point;
+    r.chain = ip.segments;
+    return r;
+  });
+}
+
 class Circular {
  public:
   Circular(const std::vector<Segment>& segments, const Point& centre);
-  std::vector<IntersectionPoint> run();
+  /// The sweep, telling `tr` (trace/hook.hpp; NoTrace: no trace code) what it does.
+  template <class H>
+  std::vector<IntersectionPoint> run(H& tr);
 
  private:
   struct StatusLess {
@@ -125,8 +142,12 @@ class Circular {
   bool lines_differ(const std::vector<std::size_t>& segments) const;
   void add_piece(std::uint32_t segment, const At& start, Rank rs, const At& end, Rank re);
   void make_groups();
-  void check(std::size_t a, std::size_t b);
-  void handle(const Event& e, const Group* g, std::vector<IntersectionPoint>& out);
+  template <class H>
+  void check(std::size_t a, std::size_t b, H& tr);
+  template <class H>
+  void handle(const Event& e, const Group* g, std::vector<IntersectionPoint>& out, H& tr);
+  template <class H>
+  void tell_status(const Event& e, const std::vector<std::size_t>& going, H& tr) const;
 
   Point o_, r_{0, 1, 0}, z_{0, 0, 1};
   Sign z_side_;                          // orient(o, z, r): the side of M0 on the line o ∨ r
@@ -305,13 +326,15 @@ void Circular::make_groups() {
 //> circular-check
 /// Schedules the crossing of a (below) and b (above), neighbours just after the current
 /// event, if they cross before the first of their ends: then they have swapped there.
-void Circular::check(std::size_t a, std::size_t b) {
+template <class H>
+void Circular::check(std::size_t a, std::size_t b, H& tr) {
   const Piece &p = pieces_[a], &q = pieces_[b];
-  if (collinear(p.segment, q.segment)) return;  // overlaps are found at their ends
+  const auto told = [&](Sign s) { tell(tr, trace::Event::neighbours, {p.segment, q.segment}, {}, s); };
+  if (collinear(p.segment, q.segment)) return told(ZERO);  // overlaps are found at their ends
   const bool p_first = compare(p.end, p.end_rank, q.end, q.end_rank) != POSITIVE;
   const bool swapped = p_first ? side(*q.la, *q.lb, p.end) == NEGATIVE
                                : side(*p.la, *p.lb, q.end) == POSITIVE;
-  if (!swapped) return;
+  if (!swapped) return told(NEGATIVE);
   // The lines meet at ±m; the crossing is the one on p's segment, after la in the turn.
   JoinMeet<double> m = join_meet(*p.la, *p.lb, *q.la, *q.lb);
   Sign s = orient(o_, *p.la, m);
@@ -320,14 +343,32 @@ void Circular::check(std::size_t a, std::size_t b) {
   Event e{At{nullptr, m}, kStart, true, static_cast<std::uint32_t>(std::min(a, b)),
           static_cast<std::uint32_t>(std::max(a, b))};
   e.rank = rank_of(e.at, false);
-  if (compare(e, current_) == POSITIVE) {
+  const bool ahead = compare(e, current_) == POSITIVE;
+  if (ahead) {
     heap_.push_back(e);
     std::push_heap(heap_.begin(), heap_.end(), Later{this});
   }
+  told(ahead ? POSITIVE : NEGATIVE);
 }
 //< circular-check
 
-void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPoint>& out) {
+/// Tells `tr` the status after the event e (its pieces as segments) and the pieces `going` on.
+template <class H>
+void Circular::tell_status(const Event& e, const std::vector<std::size_t>& going, H& tr) const {
+  if constexpr (trace::traced<H>) {
+    const ExactPoint at = reduced(e.at.p ? to_exact(*e.at.p) : to_exact(e.at.m));
+    std::vector<std::size_t> now, on;
+    for (std::size_t k : status_) now.push_back(pieces_[k].segment);
+    for (std::size_t k : going) on.push_back(pieces_[k].segment);
+    trace::Report r = trace::about(trace::Event::sweep, {}, now);
+    r.point = &at;
+    r.through = on;
+    tr(r);
+  }
+}
+
+template <class H>
+void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPoint>& out, H& tr) {
   current_ = e;
   // The run of pieces through e: from i's place for a crossing, else found by the probe.
   auto first = status_.end();
@@ -364,6 +405,7 @@ void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPo
     flag |= input;
   } else if (through.size() >= 2 && (input || lines_differ(through))) {
     out.push_back({reduced(e.at.p ? to_exact(*e.at.p) : to_exact(e.at.m)), through});
+    tell_found(out.back(), tr);
   }
   for (std::size_t k : ending) status_.erase(where_[k]);
   for (std::size_t k : going) status_.erase(where_[k]);
@@ -371,17 +413,28 @@ void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPo
   if (g) going.insert(going.end(), g->starts.begin(), g->starts.end());
   std::sort(going.begin(), going.end(), [this](std::size_t a, std::size_t b) { return below(a, b); });
   for (std::size_t k : going) where_[k] = status_.insert(above, k);
+  tell_status(e, going, tr);
   if (going.empty()) {
-    if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above);
+    if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above, tr);
     return;
   }
   const auto lo = where_[going.front()], hi = where_[going.back()];
-  if (lo != status_.begin()) check(*std::prev(lo), *lo);
-  if (std::next(hi) != status_.end()) check(*hi, *std::next(hi));
+  if (lo != status_.begin()) check(*std::prev(lo), *lo, tr);
+  if (std::next(hi) != status_.end()) check(*hi, *std::next(hi), tr);
 }
 
-std::vector<IntersectionPoint> Circular::run() {
+template <class H>
+std::vector<IntersectionPoint> Circular::run(H& tr) {
   std::vector<IntersectionPoint> out;
+  if constexpr (trace::traced<H>) {  // the centre, and the segments cut in two pieces
+    const ExactPoint o = reduced(to_exact(o_));
+    std::vector<std::size_t> cut;
+    for (std::size_t k = 1; k < pieces_.size(); ++k)
+      if (pieces_[k].segment == pieces_[k - 1].segment) cut.push_back(pieces_[k].segment);
+    trace::Report r = trace::about(trace::Event::sweep_start, {}, cut);
+    r.point = &o;
+    tr(r);
+  }
   //> circular-loop
   std::size_t g = 0;
   while (g < groups_.size() || !heap_.empty()) {
@@ -393,14 +446,17 @@ std::vector<IntersectionPoint> Circular::run() {
       std::pop_heap(heap_.begin(), heap_.end(), Later{this});
       heap_.pop_back();
     }
-    handle(e, endpoint ? &groups_[g++] : nullptr, out);
+    handle(e, endpoint ? &groups_[g++] : nullptr, out, tr);
   }
   //< circular-loop
   for (auto& [point, entry] : on_m0_) {
     auto& [segs, input] = entry;
     std::sort(segs.begin(), segs.end());
     segs.erase(std::unique(segs.begin(), segs.end()), segs.end());
-    if (segs.size() >= 2 && (input || lines_differ(segs))) out.push_back({point, segs});
+    if (segs.size() >= 2 && (input || lines_differ(segs))) {
+      out.push_back({point, segs});
+      tell_found(out.back(), tr);
+    }
   }
   std::sort(out.begin(), out.end(),
             [](const IntersectionPoint& a, const IntersectionPoint& b) { return less_wxy(a.point, b.point); });
@@ -410,7 +466,13 @@ std::vector<IntersectionPoint> Circular::run() {
 }  // namespace circular_sweep
 
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments) {
-  return circular_sweep::Circular(segments, detail::circular_centre(segments)).run();
+  NoTrace none;
+  return circular_sweep::Circular(segments, detail::circular_centre(segments)).run(none);
+}
+
+std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments,
+                                                      const std::function<void(const trace::Report&)>& hook) {
+  return circular_sweep::Circular(segments, detail::circular_centre(segments)).run(hook);
 }
 
 }  // namespace t2

@@ -24,6 +24,10 @@
 // — front, i.e. the first line is below the second right of E, exactly when w > 0). std::set
 // only compares the key being inserted with the elements, and every key inserted at E goes
 // through E; elements are erased by iterator.
+//
+// Traced (the overload with a hook; `t2 animate intersect`), the sweep tells each reported point,
+// the status after each event and each test of two neighbours (trace/hook.hpp), in segment
+// indices; the untraced run is the NoTrace instantiation, without trace code.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -35,6 +39,7 @@
 #include "t2/kernel/join_meet.hpp"
 #include "t2/kernel/lexicographic.hpp"
 #include "t2/kernel/orient.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 // Named: a unity build (test.sh) shares one translation unit between this file and the
@@ -69,7 +74,9 @@ struct Probe {};
 class Sweep {
  public:
   explicit Sweep(const std::vector<Segment>& segments);
-  std::vector<IntersectionPoint> run();
+  /// The sweep, telling `tr` (trace/hook.hpp; NoTrace: no trace code) what it does.
+  template <class H>
+  std::vector<IntersectionPoint> run(H& tr);
 
  private:
   struct StatusLess {
@@ -90,9 +97,11 @@ class Sweep {
   bool on_vertical(const Event& a, const Event& b) const;
   Sign side_of_event(std::size_t i) const;
   bool below(std::size_t a, std::size_t b) const;
+  template <class H>
   void handle(const Event& e, const std::uint32_t* upper_begin, const std::uint32_t* upper_end,
-              std::vector<IntersectionPoint>& out);
-  void check(std::size_t a, std::size_t b);
+              std::vector<IntersectionPoint>& out, H& tr);
+  template <class H>
+  void check(std::size_t a, std::size_t b, H& tr);
 
   std::vector<Piece> pieces_;
   std::vector<Group> groups_;          // the endpoint events, sorted
@@ -192,16 +201,21 @@ bool Sweep::below(std::size_t a, std::size_t b) const {
   return w != ZERO ? w == POSITIVE : a < b;
 }
 
-/// Schedules the crossing of a and b (neighbours in the status) if it comes after the event.
-void Sweep::check(std::size_t a, std::size_t b) {
+/// Schedules the crossing of a and b (neighbours in the status, a below) if it comes after the
+/// event, and tells `tr` the test's answer.
+template <class H>
+void Sweep::check(std::size_t a, std::size_t b, H& tr) {
+  const auto told = [&](Sign s) { tell(tr, trace::Event::neighbours, {a, b}, {}, s); };
   const Sign w = turn(pieces_[a].left, pieces_[a].right, pieces_[b].left, pieces_[b].right);
-  if (w == ZERO) return;  // parallel or collinear: overlaps are found at their endpoints
+  if (w == ZERO) return told(ZERO);  // parallel or collinear: overlaps are found at their endpoints
   {  // segment.hpp's `intersects` without its degenerate cases: neither is a point (points never
      // enter the status) and their lines differ (w ≠ 0)
     const Point &pa = pieces_[a].left, &pb = pieces_[a].right, &qa = pieces_[b].left, &qb = pieces_[b].right;
     const int s1 = orient(pa, pb, qa), s2 = orient(pa, pb, qb), s3 = orient(qa, qb, pa), s4 = orient(qa, qb, pb);
-    if (!((s3 >= 0 && s4 <= 0 && s1 <= 0 && s2 >= 0) || (s3 <= 0 && s4 >= 0 && s1 >= 0 && s2 <= 0))) return;
+    if (!((s3 >= 0 && s4 <= 0 && s1 <= 0 && s2 >= 0) || (s3 <= 0 && s4 >= 0 && s1 >= 0 && s2 <= 0)))
+      return told(NEGATIVE);
   }
+  const std::size_t under = a, over = b;  // as tested, before the swap below
   if (w == NEGATIVE) std::swap(a, b);  // the front one of the two meets: turn(a, b) > 0
   const Piece &p = pieces_[a], &q = pieces_[b];
   Event e;
@@ -209,14 +223,17 @@ void Sweep::check(std::size_t a, std::size_t b) {
   e.m = JoinMeet<double>{&p.left, &p.right, &q.left, &q.right, POSITIVE};
   e.i = static_cast<std::uint32_t>(std::min(a, b));
   e.j = static_cast<std::uint32_t>(std::max(a, b));
-  if (compare_events(e, current_) == POSITIVE) {
+  const bool ahead = compare_events(e, current_) == POSITIVE;
+  if (ahead) {
     heap_.push_back(e);
     std::push_heap(heap_.begin(), heap_.end(), Later{this});
   }
+  tell(tr, trace::Event::neighbours, {under, over}, {}, ahead ? POSITIVE : NEGATIVE);
 }
 
+template <class H>
 void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::uint32_t* upper_end,
-                   std::vector<IntersectionPoint>& out) {
+                   std::vector<IntersectionPoint>& out, H& tr) {
   current_ = e;
   // The segments of the status through e: one run. For a crossing alone the run holds i, and
   // is found from i's place without a search; else from the first segment not below e. A
@@ -249,6 +266,12 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
       ip.segments.insert(ip.segments.end(), inner_.begin(), inner_.end());
       std::sort(ip.segments.begin(), ip.segments.end());
       out.push_back(std::move(ip));
+      tell(tr, [&] {
+        trace::Report r = trace::about(trace::Event::found, {});
+        r.point = &out.back().point;
+        r.chain = out.back().segments;
+        return r;
+      });
     }
   }
   for (std::size_t i : lower_) status_.erase(where_[i]);
@@ -265,16 +288,25 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
     where_[i] = node != moved_.end() ? status_.insert(above, std::move(*node)) : status_.insert(above, i);
   }
   moved_.clear();
+  if constexpr (trace::traced<H>) {  // the status after e, lent as a list
+    const ExactPoint at = reduced(e.p ? to_exact(*e.p) : to_exact(e.m));
+    const std::vector<std::size_t> now(status_.begin(), status_.end());
+    trace::Report r = trace::about(trace::Event::sweep, {}, now);
+    r.point = &at;
+    r.through = order_;
+    tr(r);
+  }
   if (order_.empty()) {
-    if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above);
+    if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above, tr);
     return;
   }
   const auto lo = where_[order_.front()], hi = where_[order_.back()];
-  if (lo != status_.begin()) check(*std::prev(lo), *lo);
-  if (std::next(hi) != status_.end()) check(*hi, *std::next(hi));
+  if (lo != status_.begin()) check(*std::prev(lo), *lo, tr);
+  if (std::next(hi) != status_.end()) check(*hi, *std::next(hi), tr);
 }
 
-std::vector<IntersectionPoint> Sweep::run() {
+template <class H>
+std::vector<IntersectionPoint> Sweep::run(H& tr) {
   std::vector<IntersectionPoint> out;
   std::size_t g = 0;
   while (g < groups_.size() || !heap_.empty()) {
@@ -300,7 +332,7 @@ std::vector<IntersectionPoint> Sweep::run() {
       std::pop_heap(heap_.begin(), heap_.end(), Later{this});
       heap_.pop_back();
     }
-    handle(e, upper_begin, upper_end, out);
+    handle(e, upper_begin, upper_end, out, tr);
   }
   return out;
 }
@@ -308,7 +340,13 @@ std::vector<IntersectionPoint> Sweep::run() {
 }  // namespace plane_sweep
 
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments) {
-  return plane_sweep::Sweep(segments).run();
+  NoTrace none;
+  return plane_sweep::Sweep(segments).run(none);
+}
+
+std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments,
+                                                   const std::function<void(const trace::Report&)>& hook) {
+  return plane_sweep::Sweep(segments).run(hook);
 }
 
 }  // namespace t2

@@ -105,7 +105,7 @@ const Peer* find_peer(const std::string& name) {
 std::vector<const Algorithm*> animated() {
   std::vector<const Algorithm*> v;
   for (const auto& a : all())
-    if (a.record) v.push_back(&a);
+    if (a.animates()) v.push_back(&a);
   return v;
 }
 

@@ -78,9 +78,15 @@ struct Algorithm {
   /// answer to the recording; throws t2::BadInput or t2::Undefined naming the scene. nullptr:
   /// `t2 animate` does not show it.
   std::function<void(const Points&, const std::string& name, t2::trace::Recording&)> record{};
+  /// The same for a problem of segments (Input::segments): runs it with its recorder on the
+  /// segments of the scene `name`, whose endpoints are the page's points 2i and 2i + 1.
+  std::function<void(const std::vector<t2::Segment>&, const std::string& name, t2::trace::Recording&)>
+      record_segments{};
   /// Prepares a timed run on `in` (which outlives the run); nullptr: `t2 bench` does not time it.
   std::function<Timed(BenchInput& in)> time{};
   std::vector<std::string> peers{};  ///< timed with it when `t2 bench` has no --vs
+  /// True when `t2 animate` shows it (a recorder of points or of segments).
+  bool animates() const { return bool(record) || bool(record_segments); }
 };
 
 /// An implementation that is not t2's, timed by `t2 bench` beside t2's algorithms; its run is
@@ -108,7 +114,7 @@ const Problem* find_problem(const std::string& name);
 const Algorithm* find(const std::string& name);
 const Peer* find_peer(const std::string& name);
 
-/// The algorithms `t2 animate` shows (record given), and those `t2 bench` times (time given).
+/// The algorithms `t2 animate` shows (`animates()`), and those `t2 bench` times (time given).
 std::vector<const Algorithm*> animated();
 std::vector<const Algorithm*> timed();
 

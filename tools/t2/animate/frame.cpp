@@ -33,12 +33,13 @@ void segment(dr::Figure& f, const Point& a, const Point& b, const dr::Style& s) 
   f.segment(a, b, s);
 }
 
-// The points a step's text names ("p12"), which alone get labels: with every point labelled,
-// the labels of a few dozen points pile up into an unreadable heap.
-std::vector<bool> named(const std::string& text, std::size_t n) {
+// The points a step's text names ("p12"; segments "s12" with prefix 's'), which alone get
+// labels: with every point labelled, the labels of a few dozen points pile up into an
+// unreadable heap.
+std::vector<bool> named(const std::string& text, std::size_t n, char prefix = 'p') {
   std::vector<bool> out(n, false);
   for (std::size_t k = 0; k + 1 < text.size(); ++k) {
-    if (text[k] != 'p' || (k > 0 && std::isalnum(static_cast<unsigned char>(text[k - 1]))) ||
+    if (text[k] != prefix || (k > 0 && std::isalnum(static_cast<unsigned char>(text[k - 1]))) ||
         !std::isdigit(static_cast<unsigned char>(text[k + 1])))
       continue;
     std::size_t i = 0, j = k + 1;
@@ -66,9 +67,31 @@ dr::PlaneView plane_view(const std::vector<Point>& P) {
   return v;
 }
 
+// The middle of the segment of T² from a to b, for its label (a picture: doubles).
+Point middle(const Point& a, const Point& b) {
+  const double na = std::hypot(a.w(), a.x(), a.y()), nb = std::hypot(b.w(), b.x(), b.y());
+  return Point(a.w() / na + b.w() / nb, a.x() / na + b.x() / nb, a.y() / na + b.y() / nb);
+}
+
+// An animation of segments (frame.hpp): every segment thin, the chain's (the status) thick, and
+// those the text names labelled at their middle.
+void draw_segments(dr::Figure& f, const std::vector<Point>& P, const t2::trace::Step& s,
+                   const std::vector<t2::trace::Edge>& segments) {
+  for (const auto& e : segments) segment(f, P[e[0]], P[e[1]], dr::Style().color(kGrey).width(1.2).layer(0));
+  for (std::size_t i : s.chain)
+    segment(f, P[segments[i][0]], P[segments[i][1]], dr::Style().color(kChain).width(2.4).layer(2));
+  const std::vector<bool> label = named(s.text, segments.size(), 's');
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    if (label[i] && P[segments[i][0]] != P[segments[i][1]])
+      f.label(middle(P[segments[i][0]], P[segments[i][1]]), fmt::format("s{}", i),
+              dr::Style().label_angle(45).halo(false).layer(4));  // one place, no glyph outlines: a
+                                                                   // few bytes of the page a label
+}
+
 }  // namespace
 
-std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
+std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s,
+                      const std::vector<t2::trace::Edge>& segments) {
   dr::Figure f;
   // The triangulation so far: each edge once, from its lower index (an edge of two triangles,
   // drawn from both, was two lines of the page that differ only in direction).
@@ -93,8 +116,10 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
   dr::add_scene(f, s.overlay, over);
   for (const auto& c : s.curves)  // sampled curves (a beach line): drawing only
     if (c.size() >= 2) f.polyline(c, dr::Style().color(kCurve).width(1.8).layer(1));
+  if (!segments.empty()) draw_segments(f, P, s, segments);
   std::vector<Point> chain;
-  for (std::size_t i : s.chain) chain.push_back(P[i]);
+  for (std::size_t i : s.chain)
+    if (segments.empty()) chain.push_back(P[i]);
   const dr::Style ch = dr::Style().color(s.closed ? kHull : kChain).width(2.4).layer(2);
   if (s.closed && chain.size() >= 3) {
     f.add(chain, dr::Style(ch).fill(kHull).fill_opacity(0.18));
@@ -106,7 +131,7 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s) {
     segment(f, P[e[0]], P[e[1]], dr::Style().color(kFocus).width(2).dash({6, 3}).layer(3));
   const std::vector<bool> label = named(s.text, P.size());
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const bool on_chain = std::find(s.chain.begin(), s.chain.end(), i) != s.chain.end();
+    const bool on_chain = segments.empty() && std::find(s.chain.begin(), s.chain.end(), i) != s.chain.end();
     dr::Style st = dr::Style().color(on_chain ? "#000000" : kGrey).layer(4);
     if (label[i]) st.label(fmt::format("p{}", i)).label_angle(45);
     f.add(P[i], st);

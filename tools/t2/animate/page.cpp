@@ -194,7 +194,8 @@ std::string lighter(std::string_view line, std::map<std::string, std::size_t, st
 
 }  // namespace
 
-std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps) {
+std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps,
+                 const std::vector<t2::trace::Edge>& segments) {
   std::string html(reinterpret_cast<const char*>(player_html), player_html_size);
   // The frames share most of their lines (the Ω ring, the sphere, the glyphs, the points): each
   // distinct line of SVG is stored once, and a frame is the list of its lines' numbers. A step
@@ -205,12 +206,13 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
   std::unordered_map<std::string, std::size_t> number;
   std::map<std::string, std::size_t, std::less<>> classes;
   nlohmann::json lines = nlohmann::json::array();
-  nlohmann::json data = {{"title", title}, {"steps", nlohmann::json::array()}};
+  nlohmann::json data = {{"title", title}, {"steps", nlohmann::json::array()}, {"segments", !segments.empty()}};
   std::vector<std::size_t> previous;
   std::vector<t2::trace::Tri> previous_triangles;
+  std::vector<std::size_t> previous_chain;  // a page of segments: the status, stored as edits too
   for (const auto& s : steps) {
     nlohmann::json j = to_json(s);
-    const std::string svg = frame_svg(P, s);
+    const std::string svg = frame_svg(P, s, segments);
     std::vector<std::size_t> frame;
     for (std::size_t at = 0; at < svg.size();) {
       const std::size_t end = std::min(svg.find('\n', at), svg.size());
@@ -225,6 +227,10 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
     }
     j["frame"] = encoded(previous, frame);
     j["triangles"] = encoded(previous_triangles, s.triangles);
+    if (!segments.empty()) {
+      j["chain"] = encoded(previous_chain, s.chain);
+      previous_chain = s.chain;
+    }
     previous = std::move(frame);
     previous_triangles = s.triangles;
     data["steps"].push_back(std::move(j));

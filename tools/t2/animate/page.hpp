@@ -9,7 +9,9 @@
 
 namespace t2cli::animate {
 
-/// The whole HTML page: title, the steps (as JSON) and their frames.
-std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps);
+/// The whole HTML page: title, the steps (as JSON) and their frames. `segments`: the input
+/// segments as pairs of points of P, drawn on every frame (frame.hpp).
+std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps,
+                 const std::vector<t2::trace::Edge>& segments = {});
 
 }  // namespace t2cli::animate

@@ -53,6 +53,7 @@ struct Shape {
   std::string text;                  ///< text (kind text)
   double font_size = 13;             ///< text size, pixels
   int halign = 0;                    ///< text: -1 left edge at the point, 0 centred, 1 right
+  bool halo = true;                  ///< text: a white halo under the glyphs
 };
 
 /// Height in pixels of the band above the picture that holds a figure's title (a figure with

@@ -56,6 +56,12 @@ class Style {
   /// Direction of the label.
   double label_angle() const { return label_angle_; }
 
+  /// A white halo around the label's glyphs (default on: readable over lines). Off, the label
+  /// costs a few bytes of SVG instead of its glyphs' outlines (an animation's many frames).
+  Style& halo(bool on) { halo_ = on; return *this; }
+  /// Whether the label has its halo.
+  bool halo() const { return halo_; }
+
   /// Drawing order: lower layers first (default 0); equal layers keep insertion order.
   Style& layer(int l) { layer_ = l; return *this; }
   /// Layer.
@@ -91,6 +97,7 @@ class Style {
   double size_ = 3.5;
   std::string label_;
   double label_angle_ = std::numeric_limits<double>::quiet_NaN();
+  bool halo_ = true;
   int layer_ = 0;
   std::string fill_;
   double fill_opacity_ = 0.25;

@@ -28,6 +28,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@
 #include "t2/kernel/segment.hpp"
 
 namespace t2 {
+
+namespace trace {
+struct Report;
+}
 
 /// One reported point and the ascending indices of the segments through it.
 struct IntersectionPoint {
@@ -67,6 +72,12 @@ std::vector<IntersectionPoint> intersections_brute(const std::vector<Segment>& s
 /// Throws `Undefined` for a segment with an endpoint on Ω or behind.
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments);
 
+/// The same, telling `hook` (trace/hook.hpp) each reported point (`Event::found`), the status
+/// after each event (`Event::sweep`, the event point exact) and each test of two neighbours
+/// (`Event::neighbours`), in segment indices. Only this overload carries trace code.
+std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments,
+                                                   const std::function<void(const trace::Report&)>& hook);
+
 /// The circular sweep of T² (intersect/circular.cpp; seed 000 §5.8, Algorithm 16): a half-line
 /// from a centre o to ¬o turns once around o, and the segments it crosses at its initial
 /// position are cut there. Every segment of chapter 02 (front, back, through Ω, on Ω, one
@@ -74,6 +85,12 @@ std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& s
 /// [1, t, t²] that lies on none (intersect/circular_centre.cpp). O((n + I) log n) time, I the
 /// number of pairs (reported point, segment through it) (chapter 13, Theorem 4).
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments);
+
+/// The same, telling `hook` the centre and the cut segments (`Event::sweep_start`), then what
+/// the traced `intersections_sweep` tells, with the status ordered from the centre out; the
+/// points on the initial half-line are reported (`found`) after the turn, where they are judged.
+std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments,
+                                                      const std::function<void(const trace::Report&)>& hook);
 
 /// p scaled by the positive factor that leaves W, X, Y without common factor.
 ExactPoint reduced(const ExactPoint& p);

@@ -26,6 +26,7 @@
 #include <span>
 #include <type_traits>
 
+#include "t2/kernel/point_type.hpp"
 #include "t2/kernel/sign.hpp"
 
 namespace t2 {
@@ -36,8 +37,10 @@ namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
 /// Welzl's smallest enclosing circle the next two, the walk of point location two more, the
-/// kd-tree's query two more, and Fortune's sweep the last five (its `chain` is the beach line
-/// after the event: the sites of its arcs left to right, input indices, a site once per arc).
+/// kd-tree's query two more, Fortune's sweep five more (its `chain` is the beach line after the
+/// event: the sites of its arcs left to right, input indices, a site once per arc), and the
+/// sweeps of segment intersection (chapter 13: Bentley–Ottmann, the circular sweep) the last
+/// four. A segment sweep names *segments* by their input index.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -87,6 +90,16 @@ enum class Event {
   breakpoint,     ///< Fortune: where is site at[2] against the breakpoint of the arcs of at[0]
                   ///< (left) and at[1] (right)? `sign` is sign(breakpoint's x − the site's x)
                   ///< (POSITIVE: the site is left of it)
+  sweep_start,    ///< the circular sweep begins: `point` is its centre o, `chain` the segments cut at
+                  ///< its initial half-line (from o through [0, 1, 0] to ¬o)
+  found,          ///< an intersection point is reported: `point`, the segments through it in
+                  ///< `chain` (ascending); told before the status changes at it
+  sweep,          ///< the sweep has passed the event point `point`: `chain` is the status after it
+                  ///< (segments from below, or from the centre out), `through` the segments
+                  ///< through the point that go on past it, in their new order
+  neighbours,     ///< do the status neighbours at[0] (below) and at[1] (above) cross after the
+                  ///< event? `sign`: POSITIVE yes (the crossing is queued), NEGATIVE no, ZERO they
+                  ///< lie on one line or are parallel (overlaps are found at their endpoints)
 };
 
 /// One event, as the algorithm reports it (see the file comment).
@@ -103,6 +116,9 @@ struct Report {
   std::span<const std::uint32_t> face_list;          ///< more triangles of `tr` (replace)
   Sign sign = ZERO;                                  ///< a predicate's answer (in_circle)
   bool tie = false;  ///< the exact predicate was zero and the symbolic perturbation decided
+  const ExactPoint* point = nullptr;       ///< a constructed point, exact (sweeps: the event, a
+                                           ///< reported intersection, the centre); lent
+  std::span<const std::size_t> through;    ///< a second list of input indices (sweep: see the event)
 
   /// The input index of vertex v of `tr`.
   std::size_t input(std::uint32_t v) const { return input_of.empty() ? v : input_of[v]; }
