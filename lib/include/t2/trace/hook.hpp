@@ -31,11 +31,14 @@
 namespace t2 {
 
 class Triangulation;
+class UnionFind;
+struct EmptyCircle;
 
 namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
-/// Welzl's smallest enclosing circle the last two.
+/// Welzl's smallest enclosing circle the next two, the
+/// proximity problems (chapter 12) the last four.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -61,6 +64,16 @@ enum class Event {
   enclose,        ///< the disk is now the one of at[0..2]: a circumcircle, a diameter (at[2]
                   ///< none) or one point (at[1] none)
   in_disk,        ///< is at[0] in the last `enclose`'s closed disk? `sign` answers (POSITIVE in)
+  candidates,     ///< the proximity candidates of one side: `tr` its planar Delaunay triangulation,
+                  ///< vertex v the input point input(v) (Kruskal: its edges are the candidates)
+  tree_edge,      ///< Kruskal takes the edge at[0] at[1]: it joins two components; `forest` after
+  cycle_edge,     ///< Kruskal drops the edge at[0] at[1]: both ends are in one component of
+                  ///< `forest`, and the edge would close a cycle
+  empty_circle,   ///< a candidate of the largest empty circle: `circle` (its exact centre, squared
+                  ///< radius, the sites that define it); at[0..2] a Voronoi vertex's Delaunay
+                  ///< triangle, or at[0], at[1] the sites of a Voronoi edge and at[2], at[3] the
+                  ///< hull edge it crosses (or at[0], at[1] alone: the midpoint of collinear sites).
+                  ///< `sign`: POSITIVE a new best, ZERO no better, NEGATIVE outside the hull
 };
 
 /// One event, as the algorithm reports it (see the file comment).
@@ -77,6 +90,8 @@ struct Report {
   std::span<const std::uint32_t> face_list;          ///< more triangles of `tr` (replace)
   Sign sign = ZERO;                                  ///< a predicate's answer (in_circle)
   bool tie = false;  ///< the exact predicate was zero and the symbolic perturbation decided
+  const UnionFind* forest = nullptr;   ///< Kruskal's components now, over input indices (emst)
+  const EmptyCircle* circle = nullptr; ///< a candidate circle, exact (the largest empty circle)
 
   /// The input index of vertex v of `tr`.
   std::size_t input(std::uint32_t v) const { return input_of.empty() ? v : input_of[v]; }
