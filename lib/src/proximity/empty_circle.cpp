@@ -123,9 +123,9 @@ double radius2_bound(const Point& a, const Point& b, const Point& c) {
 
 //> largest-empty-circle
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
-template <class H>
+template <class Tr>
 void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X, Best& best, bool mirrored,
-                H& hook) {
+                Tr& hook) {
   const auto edges = tr.hull_edges();
   std::vector<Index> after(X.size(), Triangulation::none);  // the next hull vertex
   for (auto [a, b] : edges) after[a] = b;
