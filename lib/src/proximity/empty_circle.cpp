@@ -66,15 +66,16 @@ ExactPoint exact_center(const Q& z, bool mirrored) {
   return ExactPoint(w, x, y);
 }
 
-/// Tells `hook` of the candidate centre z, squared radius r2, defined by the sites `on`
-/// (`at` the report's points, `s` its sign: hook.hpp, Event::empty_circle); nothing for NoTrace.
+/// Tells `hook` of the candidate centre z, whose radius is |r| (r = z minus a site), defined by
+/// the sites `on` (`at` the report's points, `s` its sign: hook.hpp, Event::empty_circle);
+/// nothing, not even |r|², for NoTrace.
 template <class H>
-void tell_candidate(H& hook, const Q& z, const Rational& r2, bool mirrored, std::initializer_list<std::size_t> at,
-          std::initializer_list<Index> on, Sign s) {
+void tell_candidate(H& hook, const Q& z, const Q& r, bool mirrored, std::initializer_list<std::size_t> at,
+                    std::initializer_list<Index> on, Sign s) {
   if constexpr (trace::traced<H>) {
     EmptyCircle c;
     c.center = exact_center(z, mirrored);
-    c.radius2 = r2;
+    c.radius2 = dot(r, r);
     c.on_circle.assign(on.begin(), on.end());
     std::sort(c.on_circle.begin(), c.on_circle.end());
     trace::Report r = trace::about(trace::Event::empty_circle, at);
@@ -123,9 +124,10 @@ double radius2_bound(const Point& a, const Point& b, const Point& c) {
 
 //> largest-empty-circle
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
+/// Each candidate is told to `hook` (NoTrace: nothing, and no trace code).
 template <class Tr>
-void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X, Best& best, bool mirrored,
-                Tr& hook) {
+void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X,
+                Best& best, bool mirrored, Tr& hook) {
   const auto edges = tr.hull_edges();
   std::vector<Index> after(X.size(), Triangulation::none);  // the next hull vertex
   for (auto [a, b] : edges) after[a] = b;
@@ -154,9 +156,9 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
       if (next == Triangulation::none) throw std::logic_error("lec: no exit");
       const Q z{X[a].x + lambda * D.x, X[a].y + lambda * D.y};
       const Q zs = z - X[s];
-      const Rational r2 = dot(zs, zs);
-      const bool better = best.offer(z, r2, s, next);
-      tell_candidate(hook, z, r2, mirrored, {s, next, a, b}, {s, next}, better ? POSITIVE : ZERO);
+      const bool better = best.offer(z, dot(zs, zs), s, next);
+      tell_candidate(hook, z, zs, mirrored, {s, next, a, b}, {s, next},
+                     better ? POSITIVE : ZERO);
       s = next;  // D·X[s] grows at each step: the walk ends
     }
   }
@@ -176,12 +178,9 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
     const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
     const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // centre − a
     const Q z{a.x + u.x, a.y + u.y};
-    if (in_hull(H, z)) {
-      const bool better = best.offer(z, dot(u, u), t[0]);
-      tell_candidate(hook, z, dot(u, u), mirrored, {t[0], t[1], t[2]}, {t[0], t[1], t[2]}, better ? POSITIVE : ZERO);
-    } else {
-      tell_candidate(hook, z, dot(u, u), mirrored, {t[0], t[1], t[2]}, {t[0], t[1], t[2]}, NEGATIVE);
-    }
+    const bool in = in_hull(H, z), better = in && best.offer(z, dot(u, u), t[0]);
+    tell_candidate(hook, z, u, mirrored, {t[0], t[1], t[2]}, {t[0], t[1], t[2]},
+                   !in ? NEGATIVE : better ? POSITIVE : ZERO);
   }
 }
 //< largest-empty-circle
@@ -226,7 +225,7 @@ EmptyCircle empty_circle(std::span<const Point> P, H& hook) {
       const Q half{(b.x - a.x) / 2, (b.y - a.y) / 2};
       const Q z{a.x + half.x, a.y + half.y};
       const bool better = best.offer(z, dot(half, half), order[m - 1], order[m]);
-      tell_candidate(hook, z, dot(half, half), mirrored, {order[m - 1], order[m]}, {order[m - 1], order[m]},
+      tell_candidate(hook, z, half, mirrored, {order[m - 1], order[m]}, {order[m - 1], order[m]},
            better ? POSITIVE : ZERO);
     }
   }
