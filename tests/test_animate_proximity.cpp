@@ -5,13 +5,16 @@
 // taken for distinct front sites; every dropped edge's ends were already joined by the edges
 // taken before it (a union–find of the test's own); every candidate circle of the largest empty
 // circle is empty (exact rational distances, and in_circle for a Voronoi vertex), passes through
-// the sites that define it, and the answer's radius is the largest candidate's; the pages of 200
-// points weigh at most 1 MB; bad and undefined input exit 2 and 3.
+// the sites that define it, and the answer's radius is the largest candidate's; the divide and
+// conquer closest pair's last new closest is the answer, the brute force's, and each split
+// divides its sites at its line; the pages of 200 points weigh at most 1 MB; bad and undefined
+// input exit 2 and 3.
 #include <fmt/format.h>
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -23,6 +26,7 @@
 #include "t2/gen/generate.hpp"
 #include "t2/kernel/incircle.hpp"
 #include "t2/kernel/orient.hpp"
+#include "t2/proximity/closest_pair.hpp"
 #include "t2/proximity/empty_circle.hpp"
 #include "t2/proximity/spanning_tree.hpp"
 #include "t2/proximity/union_find.hpp"
@@ -175,6 +179,49 @@ TEST(EmptyCircleTrace, EveryCandidateIsEmptyAndTheAnswerIsTheLargest) {
   EXPECT_GT(midpoints, 0);
 }
 
+// Shamos–Hoey traced: the last new closest pair is the answer, which is the brute force's; every
+// split's halves are the sites left and right of its line, and every strip lies in a split.
+TEST(DivideTrace, TheLastNewClosestIsTheAnswerAndTheSplitsDivide) {
+  std::mt19937 rng(7);
+  int splits = 0, compared = 0;
+  for (int n : {2, 3, 4, 9, 30, 80}) {
+    const std::vector<Point> P = small_integer_sites(rng, n, 40);
+    SCOPED_TRACE(n);
+    std::pair<std::size_t, std::size_t> last{Report::none, Report::none};
+    std::map<std::size_t, std::vector<std::size_t>> split_at;  // a split's sites, by its line's site
+    const auto got = closest_pair_divide(std::span<const Point>(P), [&](const Report& r) {
+      if (r.event == Event::split) {
+        ++splits;
+        const std::vector<std::size_t> v(r.chain.begin(), r.chain.end());
+        const auto at = std::find(v.begin(), v.end(), r.at[0]);
+        ASSERT_NE(at, v.end());
+        ASSERT_GE(at - v.begin(), 1);
+        const mpq_class xm = drawn(P[r.at[0]]).x;
+        for (auto it = v.begin(); it != v.end(); ++it)  // sorted by x: left of the line, then right
+          EXPECT_TRUE(it < at ? drawn(P[*it]).x <= xm : drawn(P[*it]).x >= xm);
+        split_at[r.at[0]] = v;
+      } else if (r.event == Event::strip) {  // after both halves: the strip of the split at its line
+        ASSERT_TRUE(split_at.count(r.at[0]));
+        const auto& v = split_at[r.at[0]];
+        for (std::size_t i : r.chain) EXPECT_NE(std::find(v.begin(), v.end(), i), v.end());
+      } else if (r.event == Event::compare_pair) {
+        ++compared;
+        if (r.sign == POSITIVE) last = std::minmax(r.at[0], r.at[1]);
+      }
+    });
+    const auto brute = closest_pair_brute(std::span<const Point>(P));
+    EXPECT_EQ(got, closest_pair_divide(std::span<const Point>(P)));
+    EXPECT_EQ(got, brute);
+    EXPECT_EQ(pair_weight(P[got.first], P[got.second]), pair_weight(P[brute.first], P[brute.second]));
+    if (P[0].w() > 0 && !(P[got.first] == P[got.second])) {
+      EXPECT_EQ(last.first, got.first);
+      EXPECT_EQ(last.second, got.second);
+    }
+  }
+  EXPECT_GT(splits, 20);
+  EXPECT_GT(compared, 100);
+}
+
 class AnimateProximity : public CliTest {};
 
 TEST_F(AnimateProximity, PagesEndWithTheAnswerAndWeighAtMostAMegabyte) {
@@ -219,6 +266,17 @@ TEST_F(AnimateProximity, PagesEndWithTheAnswerAndWeighAtMostAMegabyte) {
     EXPECT_TRUE(has(steps.back().step.at("text").get<std::string>(), fmt::format("centre [{}, {}, {}]", w, x, y)))
         << steps.back().step.at("text") << " vs " << lec.out;
     EXPECT_TRUE(has(steps.back().svg, "stroke-dasharray")) << "the circle is drawn";
+    // closest-pair-divide: the answer is t2 closest-pair --algorithm divide's
+    r = t2("animate closest-pair-divide p.t2 -o c.html");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_LE(fs::file_size(dir_ / "c.html"), 1u << 20);
+    const Result pair = t2("closest-pair p.t2 --algorithm divide");
+    ASSERT_EQ(pair.status, 0) << pair.err;
+    steps = page_steps(slurp(dir_ / "c.html"));
+    std::istringstream po(pair.out);
+    std::size_t i = 0, j = 0;
+    po >> i >> j;
+    EXPECT_EQ(steps.back().step.at("chain"), nlohmann::json({i, j})) << pair.out;
   }
 }
 
@@ -242,8 +300,11 @@ TEST_F(AnimateProximity, BothSidesAndOmegaAnimateTheTreeButNotTheEmptyCircle) {
   r = t2("animate lec empty.t2 -o out.html");
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(has(r.err, "empty.t2")) << r.err;
+  r = t2("animate closest-pair-divide mixed.t2 -o out.html");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.err, "front points only")) << r.err;
   write("bad.t2", "0 0\n1 x\n");
-  for (const char* algo : {"emst", "lec"}) {
+  for (const char* algo : {"emst", "lec", "closest-pair-divide"}) {
     r = t2(std::string("animate ") + algo + " bad.t2 -o out.html");
     EXPECT_EQ(r.status, 2) << algo;
     EXPECT_TRUE(has(r.err, "bad.t2:2")) << r.err;

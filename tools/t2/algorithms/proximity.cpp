@@ -1,6 +1,6 @@
 // The proximity problems of T² (chapter 12, t2/proximity/), timed by `t2 bench` on points of
-// the plane; Kruskal's spanning tree, Welzl's smallest enclosing circle and the largest empty
-// circle are animated too (their recorders below). Each but the three `sec` ones (Shamos's builds the whole complex) and `closest-pair-divide`
+// the plane; Kruskal's spanning tree, the divide and conquer closest pair, Welzl's smallest
+// enclosing circle and the largest empty circle are animated too (their recorders below). Each but the three `sec` ones (Shamos's builds the whole complex) and `closest-pair-divide`
 // builds the Delaunay triangulation of each side in its run, so `t2 bench emst delaunay` compares the whole cost with
 // the triangulation's.
 #include <fmt/format.h>
@@ -233,6 +233,76 @@ void record_lec(const Points& P, const std::string& name, tr::Recording& rec) {
   rec.add(std::move(s));
 }
 
+// A pair as a scene: the segment between its sites (none when they are equal).
+t2::Scene pair_scene(const Points& P, std::pair<std::uint32_t, std::uint32_t> p) {
+  t2::Scene s;
+  if (!(P[p.first] == P[p.second]) && !(P[p.first] == t2::antipode(P[p.second])))
+    tr::add_segment(s, P[p.first], P[p.second]);
+  return s;
+}
+
+// Shamos and Hoey's divide and conquer with a recorder: each split (its line), each strip and
+// each pair compared a debugging step, each new closest pair a lecture step, the pair last.
+void record_divide(const Points& P, const std::string& name, tr::Recording& rec) {
+  if (!std::all_of(P.begin(), P.end(), [](const t2::Point& p) { return p.w() > 0; }))
+    throw t2::BadInput(fmt::format("{}: t2 animate closest-pair-divide takes front points only (w > 0); t2 "
+                                   "closest-pair --algorithm divide answers for every input",
+                                   name));
+  if (P.size() < 2) throw t2::BadInput(fmt::format("{}: the closest pair needs at least two points", name));
+  const bool named = P.size() <= kNamedAtMost;
+  std::vector<tr::Edge> best;
+  const auto vertical = [&](std::size_t m) {  // the line x = x(p_m), upwards
+    t2::Scene s;
+    tr::add_line(s, P[m], t2::Point(P[m].w(), P[m].x(), P[m].y() + P[m].w()));
+    return s;
+  };
+  const auto hook = [&](const tr::Report& r) {
+    const std::vector<std::size_t> sites(r.chain.begin(), r.chain.end());
+    const std::string line = named ? fmt::format("the line through p{}", r.at[0]) : std::string("the line drawn");
+    tr::Step s;
+    if (r.event == tr::Event::split) {
+      const auto right = std::find(sites.begin(), sites.end(), r.at[0]) - sites.begin();
+      s = make_step("split", fmt::format("Split {} sites (marked) at {}: {} on the left, {} on the right, each half "
+                                         "solved first.",
+                                         sites.size(), line, right, sites.size() - right),
+                    "closest so far");
+      s.points = sites;
+      s.overlay = vertical(r.at[0]);
+    } else if (r.event == tr::Event::strip) {
+      s = make_step("strip", fmt::format("The strip: {} sites (marked) near {}, by y; each is compared with those "
+                                         "above it that are near enough.",
+                                         sites.size(), line),
+                    "closest so far");
+      s.points = sites;
+      s.overlay = vertical(r.at[0]);
+    } else if (r.event == tr::Event::compare_pair) {
+      const std::size_t a = r.at[0], b = r.at[1];
+      const std::string pair = named ? fmt::format("p{}-p{}", a, b) : std::string("The pair drawn thick");
+      if (r.sign == t2::POSITIVE) best = {{std::min(a, b), std::max(a, b)}};
+      s = make_step("compare",
+                    r.sign == t2::POSITIVE
+                        ? fmt::format("{} ({}): the closest pair so far.", pair, weight_words(P, a, b))
+                        : fmt::format("{} ({}) is no nearer than the closest so far.", pair, weight_words(P, a, b)),
+                    "closest so far");
+      s.chain = {a, b};
+      s.points = {a, b};
+    } else {
+      return;
+    }
+    s.depth = r.event == tr::Event::compare_pair && r.sign == t2::POSITIVE ? tr::Depth::lecture : tr::Depth::debugging;
+    s.edges = best;
+    rec.add(std::move(s));
+  };
+  const auto p = t2::closest_pair_divide(std::span<const t2::Point>(P), hook);
+  tr::Step s = make_step("answer", fmt::format("The closest pair: p{}-p{} ({}).", p.first, p.second,
+                                               weight_words(P, p.first, p.second)),
+                         "closest so far");
+  s.chain = {p.first, p.second};
+  s.points = {p.first, p.second};
+  s.edges = {{p.first, p.second}};
+  rec.add(std::move(s));
+}
+
 T2_ALGORITHM({.name = "emst",  // what `t2 emst` runs
               .problem = "emst",
               .summary = "t2::minimum_spanning_tree: Kruskal on the Delaunay edges of each side of T2 (Algorithm 12)",
@@ -264,8 +334,10 @@ T2_ALGORITHM({.name = "closest-pair",  // what `t2 closest-pair` runs (--algorit
 
 T2_ALGORITHM({.name = "closest-pair-divide",  // t2 closest-pair --algorithm divide
               .problem = "closest-pair",
-              .summary = "t2::closest_pair_divide: Shamos-Hoey divide and conquer on each side of T2",
+              .summary = "t2::closest_pair_divide: Shamos-Hoey divide and conquer on each side of T2 (animated on front points)",
               .title = "the closest pair in T2 (divide and conquer)",
+              .run = [](const Points& P) { return pair_scene(P, t2::closest_pair_divide(std::span<const t2::Point>(P))); },
+              .record = record_divide,
               .time = [](BenchInput& in) -> Timed {
                 return [&P = in.points] {
                   t2::closest_pair_divide(std::span<const t2::Point>(P));

@@ -38,7 +38,7 @@ namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
 /// Welzl's smallest enclosing circle the next two, the
-/// proximity problems (chapter 12) the last four.
+/// proximity problems (chapter 12) the last seven.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -74,6 +74,11 @@ enum class Event {
                   ///< triangle, or at[0], at[1] the sites of a Voronoi edge and at[2], at[3] the
                   ///< hull edge it crosses (or at[0], at[1] alone: the midpoint of collinear sites).
                   ///< `sign`: POSITIVE a new best, ZERO no better, NEGATIVE outside the hull
+  split,          ///< divide and conquer splits the sites `chain` (sorted by x) at the vertical
+                  ///< line through at[0], the first site of the right half
+  strip,          ///< the sites `chain` (sorted by y) lie near the line through at[0]: the strip
+  compare_pair,   ///< the pair at[0] at[1] is compared with the closest so far; `sign` POSITIVE:
+                  ///< it is the new closest
 };
 
 /// One event, as the algorithm reports it (see the file comment).
