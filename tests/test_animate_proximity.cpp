@@ -222,62 +222,59 @@ TEST(DivideTrace, TheLastNewClosestIsTheAnswerAndTheSplitsDivide) {
   EXPECT_GT(compared, 100);
 }
 
-class AnimateProximity : public CliTest {};
+class AnimateProximity : public CliTest {
+ protected:
+  /// `t2 animate algo p.t2`'s page, which must weigh at most 1 MB, decoded; and in `plain` what
+  /// `t2 command p.t2` prints.
+  std::vector<PageStep> page(const std::string& algo, const std::string& command, std::string& plain) {
+    const Result r = t2("animate " + algo + " p.t2 -o page.html");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_LE(fs::file_size(dir_ / "page.html"), 1u << 20) << algo;
+    const Result p = t2(command + " p.t2");
+    EXPECT_EQ(p.status, 0) << p.err;
+    plain = p.out;
+    auto steps = page_steps(slurp(dir_ / "page.html"));
+    EXPECT_GE(steps.size(), 3u);
+    if (!steps.empty()) EXPECT_EQ(steps.back().step.at("kind"), "answer") << algo;
+    return steps;
+  }
+};
 
 TEST_F(AnimateProximity, PagesEndWithTheAnswerAndWeighAtMostAMegabyte) {
-  for (const char* kind : {"uniform"}) {  // 200 points: the most t2 animate takes
-    SCOPED_TRACE(kind);
-    ASSERT_EQ(t2(std::string("gen ") + kind + " --n 200 --seed 3 -o p.t2").status, 0);
-    // emst: one lecture step per tree edge, the triangulation first, the answer last
-    Result r = t2("animate emst p.t2 -o e.html");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_LE(fs::file_size(dir_ / "e.html"), 1u << 20);
-    const Result tree = t2("emst p.t2");
-    ASSERT_EQ(tree.status, 0) << tree.err;
-    std::vector<std::vector<std::size_t>> expected;
-    std::istringstream lines(tree.out);
-    for (std::size_t a, b; lines >> a >> b;) expected.push_back({a, b});
-    auto steps = page_steps(slurp(dir_ / "e.html"));
-    ASSERT_GE(steps.size(), 3u);
-    EXPECT_EQ(steps[1].step.at("kind"), "candidates");
-    EXPECT_EQ(steps.back().step.at("kind"), "answer");
-    std::vector<std::vector<std::size_t>> got;
-    for (const auto& e : steps.back().edges) got.push_back({e[0], e[1]});
-    EXPECT_EQ(got, expected);
-    std::size_t takes = 0, lecture = 0;
-    for (const auto& s : steps) {
-      takes += s.step.at("kind") == "take";
-      lecture += s.step.at("depth") == 0;
-    }
-    EXPECT_EQ(takes, 199u);
-    EXPECT_EQ(lecture, 199u + 3) << "the input, the triangulation, each edge taken, the answer";
-    // lec: the answer is t2 lec's
-    r = t2("animate lec p.t2 -o l.html");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_LE(fs::file_size(dir_ / "l.html"), 1u << 20);
-    const Result lec = t2("lec p.t2");
-    ASSERT_EQ(lec.status, 0) << lec.err;
-    steps = page_steps(slurp(dir_ / "l.html"));
-    ASSERT_GE(steps.size(), 3u);
-    EXPECT_EQ(steps.back().step.at("kind"), "answer");
-    std::istringstream out(lec.out);
-    std::string w, x, y;
-    out >> w >> x >> y;
-    EXPECT_TRUE(has(steps.back().step.at("text").get<std::string>(), fmt::format("centre [{}, {}, {}]", w, x, y)))
-        << steps.back().step.at("text") << " vs " << lec.out;
-    EXPECT_TRUE(has(steps.back().svg, "stroke-dasharray")) << "the circle is drawn";
-    // closest-pair-divide: the answer is t2 closest-pair --algorithm divide's
-    r = t2("animate closest-pair-divide p.t2 -o c.html");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_LE(fs::file_size(dir_ / "c.html"), 1u << 20);
-    const Result pair = t2("closest-pair p.t2 --algorithm divide");
-    ASSERT_EQ(pair.status, 0) << pair.err;
-    steps = page_steps(slurp(dir_ / "c.html"));
-    std::istringstream po(pair.out);
-    std::size_t i = 0, j = 0;
-    po >> i >> j;
-    EXPECT_EQ(steps.back().step.at("chain"), nlohmann::json({i, j})) << pair.out;
+  ASSERT_EQ(t2("gen uniform --n 200 --seed 3 -o p.t2").status, 0);  // the most t2 animate takes
+  // emst: one lecture step per tree edge, the triangulation first, the answer last
+  std::string plain;
+  auto steps = page("emst", "emst", plain);
+  ASSERT_GE(steps.size(), 3u);
+  std::vector<std::vector<std::size_t>> expected, got;
+  std::istringstream lines(plain);
+  for (std::size_t a, b; lines >> a >> b;) expected.push_back({a, b});
+  EXPECT_EQ(steps[1].step.at("kind"), "candidates");
+  for (const auto& e : steps.back().edges) got.push_back({e[0], e[1]});
+  EXPECT_EQ(got, expected);
+  std::size_t takes = 0, lecture = 0;
+  for (const auto& s : steps) {
+    takes += s.step.at("kind") == "take";
+    lecture += s.step.at("depth") == 0;
   }
+  EXPECT_EQ(takes, 199u);
+  EXPECT_EQ(lecture, 199u + 3) << "the input, the triangulation, each edge taken, the answer";
+  // lec: the answer is t2 lec's, its circle drawn
+  steps = page("lec", "lec", plain);
+  ASSERT_GE(steps.size(), 3u);
+  std::istringstream out(plain);
+  std::string w, x, y;
+  out >> w >> x >> y;
+  EXPECT_TRUE(has(steps.back().step.at("text").get<std::string>(), fmt::format("centre [{}, {}, {}]", w, x, y)))
+      << steps.back().step.at("text") << " vs " << plain;
+  EXPECT_TRUE(has(steps.back().svg, "stroke-dasharray")) << "the circle is drawn";
+  // closest-pair-divide: the answer is t2 closest-pair --algorithm divide's
+  steps = page("closest-pair-divide", "closest-pair --algorithm divide", plain);
+  ASSERT_GE(steps.size(), 3u);
+  std::istringstream po(plain);
+  std::size_t i = 0, j = 0;
+  po >> i >> j;
+  EXPECT_EQ(steps.back().step.at("chain"), nlohmann::json({i, j})) << plain;
 }
 
 TEST_F(AnimateProximity, BothSidesAndOmegaAnimateTheTreeButNotTheEmptyCircle) {
