@@ -235,7 +235,9 @@ class AnimateProximity : public CliTest {
     plain = p.out;
     auto steps = page_steps(slurp(dir_ / "page.html"));
     EXPECT_GE(steps.size(), 3u);
-    if (!steps.empty()) EXPECT_EQ(steps.back().step.at("kind"), "answer") << algo;
+    if (!steps.empty()) {
+      EXPECT_EQ(steps.back().step.at("kind"), "answer") << algo;
+    }
     return steps;
   }
 };
