@@ -43,11 +43,12 @@ inline nlohmann::json patched(const nlohmann::json& old, const nlohmann::json& e
   return out;
 }
 
-/// One step of a page: its JSON, its frame's SVG and its triangles, rebuilt.
+/// One step of a page: its JSON, its frame's SVG, its triangles and its edges in focus, rebuilt.
 struct PageStep {
   nlohmann::json step;                          ///< the step as the page holds it
   std::string svg;                              ///< the frame, its lines joined
   std::vector<std::array<std::size_t, 3>> triangles;  ///< every finite triangle so far
+  std::vector<std::array<std::size_t, 2>> edges;      ///< the edges in focus
 };
 
 /// The steps of a page of `t2 animate`, in order.
@@ -65,12 +66,14 @@ inline std::vector<PageStep> page_steps(const std::string& html) {
     style[k] = rule.substr(brace + 1, rule.size() - brace - 2);
   }
   std::vector<PageStep> out;
-  nlohmann::json frame = nlohmann::json::array(), tris = nlohmann::json::array(), chain = nlohmann::json::array();
+  nlohmann::json frame = nlohmann::json::array(), tris = nlohmann::json::array(), chain = nlohmann::json::array(),
+                 edges = nlohmann::json::array();
   const bool of_segments = data.value("segments", false);  // its chains are edits too
   for (const auto& s : data.at("steps")) {
     frame = patched(frame, s.at("frame"));
     tris = patched(tris, s.at("triangles"));
-    PageStep p{s, "", {}};
+    edges = patched(edges, s.at("edges"));
+    PageStep p{s, "", {}, {}};
     if (of_segments) p.step["chain"] = chain = patched(chain, s.at("chain"));
     for (const auto& i : frame) {  // each line with its style written out again
       std::string line = data.at("lines").at(i.get<std::size_t>()).get<std::string>();
@@ -81,6 +84,7 @@ inline std::vector<PageStep> page_steps(const std::string& html) {
       p.svg += line + "\n";
     }
     for (const auto& t : tris) p.triangles.push_back({t[0], t[1], t[2]});
+    for (const auto& e : edges) p.edges.push_back({e[0], e[1]});
     out.push_back(std::move(p));
   }
   return out;

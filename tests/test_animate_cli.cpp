@@ -215,7 +215,8 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
     for (std::sregex_iterator m(md.begin(), md.end(), command), end; m != end; ++m, ++in_chapter, ++commands) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
       EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge" || algo == "triangulate" ||
-                  algo == "triangulate-t2" || algo == "delaunay" || algo == "sec")
+                  algo == "triangulate-t2" || algo == "delaunay" || algo == "sec" || algo == "emst" || algo == "lec" ||
+                  algo == "closest-pair-divide")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

@@ -109,8 +109,9 @@ TEST(BookAnimationsOfThisRepository, EveryAlgorithmIsAnimatedAndLinked) {
     for (std::sregex_iterator m(md.begin(), md.end(), link), end; m != end; ++m) linked.insert((*m)[1]);
   }
   EXPECT_EQ(algos,
-            (std::set<std::string>{"delaunay", "fortune", "graham", "intersect", "intersect-circular", "jarvis",
-                                   "kdtree", "merge", "sec", "triangulate", "triangulate-t2", "walk"}));
+            (std::set<std::string>{"closest-pair-divide", "delaunay", "emst", "fortune", "graham", "intersect",
+                                   "intersect-circular", "jarvis", "kdtree", "lec", "merge", "sec", "triangulate",
+                                   "triangulate-t2", "walk"}));
   EXPECT_EQ(linked, pages);
 }
 

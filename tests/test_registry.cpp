@@ -93,7 +93,7 @@ TEST(Registry, TheAnimationEndsWithTheRunsAnswer) {
       } catch (const BadInput& e) {  // animated on front points only
         EXPECT_NE(k, gen::Kind::uniform) << e.what();
         continue;
-      } catch (const Undefined& e) {  // undefined off the front side (Fortune's sweep: exit 3)
+      } catch (const Undefined& e) {  // off the front side (Fortune), no answer on both sides (lec)
         EXPECT_NE(k, gen::Kind::uniform) << e.what();
         continue;
       }

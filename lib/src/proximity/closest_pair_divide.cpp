@@ -38,10 +38,13 @@ struct Site {
   Index id;
 };
 
-/// The divide and conquer over the sites of one side sorted by exact x.
+/// The divide and conquer over the sites of one side sorted by exact x, telling `hook`
+/// (NoTrace: nothing) each split, strip and pair compared.
+template <class H>
 class Divide {
  public:
-  Divide(std::span<const Point> P, std::vector<Site> s, double M) : P_(P), s_(std::move(s)), tmp_(s_.size()) {
+  Divide(std::span<const Point> P, std::vector<Site> s, double M, H& hook)
+      : P_(P), s_(std::move(s)), tmp_(s_.size()), hook_(hook) {
     all_ = !(M <= 0x1p500);  // infinite quotients too
     slack_ = 0x1p-48 * M + 0x1p-500;
   }
@@ -55,7 +58,9 @@ class Divide {
  private:
   /// Tries the pair (a, b) against the best so far, exactly; a nearer pair lowers the bound.
   void consider(const Site& a, const Site& b) {
-    if (best_.first != no_site && !pair_before(P_, a.id, b.id, best_.first, best_.second)) return;
+    const bool nearer = best_.first == no_site || pair_before(P_, a.id, b.id, best_.first, best_.second);
+    tell(hook_, trace::Event::compare_pair, {a.id, b.id}, {}, nearer ? POSITIVE : ZERO);
+    if (!nearer) return;
     best_ = {std::min(a.id, b.id), std::max(a.id, b.id)};
     const double dx = a.x - b.x, dy = a.y - b.y;
     if (!all_) bound_ = std::sqrt(dx * dx + dy * dy) + slack_;
@@ -75,6 +80,8 @@ class Divide {
     }
     const std::size_t mid = lo + (hi - lo) / 2;
     const double xm = s_[mid].x;  // the dividing line: x̃ of the first site on the right
+    const Index line = s_[mid].id;
+    tell_sites(trace::Event::split, line, lo, hi, s_);
     solve(lo, mid);
     solve(mid, hi);
     const auto first = s_.begin() + lo, middle = s_.begin() + mid, last = s_.begin() + hi;
@@ -85,14 +92,25 @@ class Divide {
     std::size_t k = lo;
     for (std::size_t i = lo; i < hi; ++i)
       if (near(s_[i].x - xm)) tmp_[k++] = s_[i];
+    tell_sites(trace::Event::strip, line, lo, k, tmp_);
     for (std::size_t i = lo; i < k; ++i)
       for (std::size_t j = i + 1; j < k && near(tmp_[j].y - tmp_[i].y); ++j)
         consider(tmp_[i], tmp_[j]);
   }
   //< closest-pair-divide
 
+  /// Tells the hook of the sites v[lo, hi) (their input indices lent as the chain).
+  void tell_sites(trace::Event e, Index at, std::size_t lo, std::size_t hi, const std::vector<Site>& v) {
+    if constexpr (trace::traced<H>) {
+      std::vector<std::size_t> ids;
+      for (std::size_t i = lo; i < hi; ++i) ids.push_back(v[i].id);
+      hook_(trace::about(e, {at}, ids));
+    }
+  }
+
   std::span<const Point> P_;
   std::vector<Site> s_, tmp_;
+  H& hook_;
   bool all_ = false;  ///< no filter: the quotients leave its range
   double slack_ = 0, bound_ = INFINITY;
   Pair best_{no_site, no_site};
@@ -100,8 +118,9 @@ class Divide {
 
 /// The closest pair of one side's sites `list` (as front points `F`, parallel to `list`);
 /// records equal sites in `kept`.
+template <class H>
 Pair side_pair(std::span<const Point> P, const std::vector<Index>& list, const std::vector<Point>& F,
-               std::vector<Index>& kept) {
+               std::vector<Index>& kept, H& hook) {
   std::vector<Index> order(list.size());
   for (Index k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](Index a, Index b) {
@@ -121,12 +140,11 @@ Pair side_pair(std::span<const Point> P, const std::vector<Index>& list, const s
     M = std::max({M, std::abs(x), std::abs(y)});
     s.push_back({x, y, list[k]});
   }
-  return Divide(P, std::move(s), M).run();
+  return Divide<H>(P, std::move(s), M, hook).run();
 }
 
-}  // namespace
-
-Pair closest_pair_divide(std::span<const Point> P) {
+template <class H>
+Pair divide_pair(std::span<const Point> P, H& hook) {
   if (P.size() < 2) throw BadInput("closest_pair: needs at least two sites");
   if (P.size() > Triangulation::none) throw BadInput("closest_pair: too many sites for 32-bit indices");
   const Index n = static_cast<Index>(P.size());
@@ -138,7 +156,7 @@ Pair closest_pair_divide(std::span<const Point> P) {
   std::vector<Point> F, B;
   for (Index k : front) F.push_back(P[k]);
   for (Index k : back) B.push_back(antipode(P[k]));
-  const Pair pf = side_pair(P, front, F, kept), pb = side_pair(P, back, B, kept);
+  const Pair pf = side_pair(P, front, F, kept, hook), pb = side_pair(P, back, B, kept, hook);
   if (!omega.empty()) {
     Triangulation merged;
     detail::omega_order(P, omega, merged);
@@ -151,6 +169,17 @@ Pair closest_pair_divide(std::span<const Point> P) {
     best = pb;
   if (best.first != no_site) return best;
   return detail::pair_without_finite_distance(P, omega.empty() ? no_site : omega.front());
+}
+
+}  // namespace
+
+Pair closest_pair_divide(std::span<const Point> P) {
+  NoTrace none;
+  return divide_pair(P, none);
+}
+
+Pair closest_pair_divide(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+  return divide_pair(P, hook);
 }
 
 }  // namespace t2

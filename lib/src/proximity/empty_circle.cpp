@@ -42,17 +42,48 @@ struct Best {
   std::optional<Q> c;
   Rational r2;
   Index site = Triangulation::none, other = Triangulation::none;
-  void offer(const Q& z, const Rational& r2z, Index s, Index t = Triangulation::none) {
+  /// Takes z when it is better; true when it did.
+  bool offer(const Q& z, const Rational& r2z, Index s, Index t = Triangulation::none) {
     if (c) {
       const int s = cmp(r2z, r2);
-      if (s < 0 || (s == 0 && std::pair(cmp(z.x, c->x), cmp(z.y, c->y)) >= std::pair(0, 0))) return;
+      if (s < 0 || (s == 0 && std::pair(cmp(z.x, c->x), cmp(z.y, c->y)) >= std::pair(0, 0))) return false;
     }
     c = z;
     r2 = r2z;
     site = s;
     other = t;
+    return true;
   }
 };
+
+/// The drawn position z as an exact homogeneous point with no common factor, W > 0, then
+/// mirrored to the back side (the antipode) when the sites are.
+ExactPoint exact_center(const Q& z, bool mirrored) {
+  Integer w;
+  mpz_lcm(w.get_mpz_t(), z.x.get_den_mpz_t(), z.y.get_den_mpz_t());
+  Integer x = z.x.get_num() * (w / z.x.get_den()), y = z.y.get_num() * (w / z.y.get_den());
+  if (mirrored) w = -w, x = -x, y = -y;
+  return ExactPoint(w, x, y);
+}
+
+/// Tells `hook` of the candidate centre z, whose radius is |r| (r = z minus a site), defined by
+/// the sites `on` (`at` the report's points, `s` its sign: hook.hpp, Event::empty_circle);
+/// nothing, not even |r|², for NoTrace.
+template <class H>
+void tell_candidate(H& hook, const Q& z, const Q& r, bool mirrored, std::initializer_list<std::size_t> at,
+                    std::initializer_list<Index> on, Sign s) {
+  if constexpr (trace::traced<H>) {
+    EmptyCircle c;
+    c.center = exact_center(z, mirrored);
+    c.radius2 = dot(r, r);
+    c.on_circle.assign(on.begin(), on.end());
+    std::sort(c.on_circle.begin(), c.on_circle.end());
+    trace::Report r = trace::about(trace::Event::empty_circle, at);
+    r.circle = &c;
+    r.sign = s;
+    hook(r);
+  }
+}
 
 /// The closed convex polygon of the hull corners H (counter-clockwise, no three collinear):
 /// does it hold z? O(log h): the wedge of H[0] that holds z, then that wedge's far edge.
@@ -93,8 +124,10 @@ double radius2_bound(const Point& a, const Point& b, const Point& c) {
 
 //> largest-empty-circle
 /// Algorithm 13 on the front sites `tr` (dimension 2), their exact positions `X`.
+/// Each candidate is told to `hook` (NoTrace: nothing, and no trace code).
+template <class Tr>
 void candidates(const Triangulation& tr, const std::vector<Point>& F, const Positions& X,
-                Best& best) {
+                Best& best, bool mirrored, Tr& hook) {
   const auto edges = tr.hull_edges();
   std::vector<Index> after(X.size(), Triangulation::none);  // the next hull vertex
   for (auto [a, b] : edges) after[a] = b;
@@ -123,7 +156,9 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
       if (next == Triangulation::none) throw std::logic_error("lec: no exit");
       const Q z{X[a].x + lambda * D.x, X[a].y + lambda * D.y};
       const Q zs = z - X[s];
-      best.offer(z, dot(zs, zs), s, next);
+      const bool better = best.offer(z, dot(zs, zs), s, next);
+      tell_candidate(hook, z, zs, mirrored, {s, next, a, b}, {s, next},
+                     better ? POSITIVE : ZERO);
       s = next;  // D·X[s] grows at each step: the walk ends
     }
   }
@@ -143,14 +178,15 @@ void candidates(const Triangulation& tr, const std::vector<Point>& F, const Posi
     const Rational d = 2 * cross(b, c), bb = dot(b, b), cc = dot(c, c);
     const Q u{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};  // centre − a
     const Q z{a.x + u.x, a.y + u.y};
-    if (in_hull(H, z)) best.offer(z, dot(u, u), t[0]);
+    const bool in = in_hull(H, z), better = in && best.offer(z, dot(u, u), t[0]);
+    tell_candidate(hook, z, u, mirrored, {t[0], t[1], t[2]}, {t[0], t[1], t[2]},
+                   !in ? NEGATIVE : better ? POSITIVE : ZERO);
   }
 }
 //< largest-empty-circle
 
-}  // namespace
-
-EmptyCircle largest_empty_circle(std::span<const Point> P) {
+template <class H>
+EmptyCircle empty_circle(std::span<const Point> P, H& hook) {
   if (P.empty()) throw BadInput("largest_empty_circle: needs at least one site");
   if (P.size() >= Triangulation::none) throw BadInput("largest_empty_circle: too many sites for 32-bit indices");
   const Index n = static_cast<Index>(P.size());
@@ -175,7 +211,7 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
                                      "positive radius");
   Best best;
   if (tr.dimension() == 2) {
-    candidates(tr, F, X, best);
+    candidates(tr, F, X, best, mirrored, hook);
   } else {  // collinear: the midpoints of consecutive distinct sites along the line
     std::vector<Index> order;
     std::vector<char> dropped(n, 0);
@@ -187,17 +223,16 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
       const Q& a = X[order[m - 1]];
       const Q& b = X[order[m]];
       const Q half{(b.x - a.x) / 2, (b.y - a.y) / 2};
-      best.offer({a.x + half.x, a.y + half.y}, dot(half, half), order[m - 1], order[m]);
+      const Q z{a.x + half.x, a.y + half.y};
+      const bool better = best.offer(z, dot(half, half), order[m - 1], order[m]);
+      tell_candidate(hook, z, half, mirrored, {order[m - 1], order[m]}, {order[m - 1], order[m]},
+           better ? POSITIVE : ZERO);
     }
   }
   EmptyCircle c;
   c.radius2 = best.r2;
   const Q& z = *best.c;
-  Integer w;
-  mpz_lcm(w.get_mpz_t(), z.x.get_den_mpz_t(), z.y.get_den_mpz_t());
-  Integer x = z.x.get_num() * (w / z.x.get_den()), y = z.y.get_num() * (w / z.y.get_den());
-  if (mirrored) w = -w, x = -x, y = -y;
-  c.center = ExactPoint(w, x, y);
+  c.center = exact_center(z, mirrored);
   // The sites on the circle: cocircular on an empty circle, so a Delaunay polygon (or edge)
   // of the sites: connected by Delaunay edges from `site`; then the sites equal to them.
   std::vector<char> on(n, 0);
@@ -218,6 +253,17 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
   for (Index k = 0; k < n; ++k)
     if (on[k]) c.on_circle.push_back(k);
   return c;
+}
+
+}  // namespace
+
+EmptyCircle largest_empty_circle(std::span<const Point> P) {
+  NoTrace none;
+  return empty_circle(P, none);
+}
+
+EmptyCircle largest_empty_circle(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+  return empty_circle(P, hook);
 }
 
 }  // namespace t2

@@ -14,9 +14,10 @@ using Index = ProximitySites::Index;
 /// One side: `list` the input indices of its sites (ascending), `pts` their positions as front
 /// points (the back ones drawn: antipodes). Adds its duplicates, edges and extremes to `s`.
 void add_side(const std::vector<Index>& list, std::vector<Point> pts, ProximitySites& s, std::vector<Index>& kept_sites,
-              std::vector<Index>& extremes) {
+              std::vector<Index>& extremes, const SideView& view) {
   if (list.empty()) return;
   const Triangulation tr = delaunay(std::move(pts));
+  if (view) view(tr, list);
   std::vector<char> dropped(list.size(), 0);
   for (auto [d, k] : tr.duplicates()) {  // k is the smallest local index, so the smallest input index
     s.kept[list[d]] = list[k];
@@ -46,7 +47,7 @@ void add_side(const std::vector<Index>& list, std::vector<Point> pts, ProximityS
 
 }  // namespace
 
-ProximitySites proximity_sites(std::span<const Point> points) {
+ProximitySites proximity_sites(std::span<const Point> points, const SideView& view) {
   ProximitySites s;
   const Index n = static_cast<Index>(points.size());
   s.kept.resize(n);
@@ -58,8 +59,8 @@ ProximitySites proximity_sites(std::span<const Point> points) {
   bp.reserve(back.size());
   for (Index k : front) fp.push_back(points[k]);
   for (Index k : back) bp.push_back(antipode(points[k]));
-  add_side(front, std::move(fp), s, s.front, s.front_extremes);
-  add_side(back, std::move(bp), s, s.back, s.back_extremes);
+  add_side(front, std::move(fp), s, s.front, s.front_extremes, view);
+  add_side(back, std::move(bp), s, s.back, s.back_extremes, view);
   if (!omega.empty()) {  // equal directions: the one of smallest index is kept (delaunay_t2.hpp)
     Triangulation merged;
     std::vector<Index> z = detail::omega_order(points, omega, merged);

@@ -16,6 +16,16 @@ namespace {
 using Index = Triangulation::Index;
 using Edge = std::pair<Index, Index>;
 
+/// Tells `hook` that Kruskal takes (tree_edge) or drops (cycle_edge) the edge e; nothing for NoTrace.
+template <class H>
+void tell_edge(H& hook, trace::Event what, const Edge& e, const UnionFind& uf) {
+  tell(hook, [&] {
+    trace::Report r = trace::about(what, {e.first, e.second});
+    r.forest = &uf;
+    return r;
+  });
+}
+
 /// Sorts the finite edges by `pair_before`: by `finite_key` when every edge has one, each run
 /// of near keys (`keys_near`) then re-sorted exactly; otherwise exactly throughout.
 void sort_finite(std::span<const Point> P, std::vector<Edge>& edges) {
@@ -48,7 +58,8 @@ void sort_finite(std::span<const Point> P, std::vector<Edge>& edges) {
 /// Kruskal's pairs at +∞ (at least one site on Ω), all of one weight, in the order of their
 /// indices: for each i ascending, the first site j > i of every other component that makes an
 /// eligible pair with i (j on Ω when i is proper); their joins in the order of j.
-void join_infinite(std::span<const Point> P, UnionFind& uf, std::vector<Edge>& tree) {
+template <class H>
+void join_infinite(std::span<const Point> P, UnionFind& uf, std::vector<Edge>& tree, H& hook) {
   struct Group {
     std::vector<Index> members;  // ascending
     bool omega;
@@ -77,17 +88,27 @@ void join_infinite(std::span<const Point> P, UnionFind& uf, std::vector<Edge>& t
     }
     std::sort(offers.begin(), offers.end());
     for (auto [j, r] : offers)
-      if (uf.join(i, j)) tree.emplace_back(i, j);
+      if (uf.join(i, j)) {
+        tree.emplace_back(i, j);
+        tell_edge(hook, trace::Event::tree_edge, tree.back(), uf);
+      }
   }
 }
 
-}  // namespace
-
 //> minimum-spanning-tree
-std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
+template <class H>
+std::vector<Edge> spanning_tree(std::span<const Point> P, H& hook) {
   std::vector<Edge> tree;
   if (P.size() < 2) return tree;
-  ProximitySites s = proximity_sites(P);
+  SideView view;
+  if constexpr (trace::traced<H>)
+    view = [&](const Triangulation& tr, std::span<const Index> input_of) {
+      trace::Report r = trace::about(trace::Event::candidates, {});
+      r.tr = &tr;
+      r.input_of = input_of;
+      hook(r);
+    };
+  ProximitySites s = proximity_sites(P, view);
   UnionFind uf(P.size());
   // Weight 0: each equal site joins the first of them, in the order of the pairs (kept, i).
   std::vector<Edge> equal;
@@ -95,15 +116,20 @@ std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
     if (s.kept[i] != i) equal.emplace_back(s.kept[i], i);
   std::sort(equal.begin(), equal.end());
   for (const Edge& e : equal)
-    if (uf.join(e.first, e.second)) tree.push_back(e);
+    if (uf.join(e.first, e.second)) {
+      tree.push_back(e);
+      tell_edge(hook, trace::Event::tree_edge, e, uf);
+    }
   // Finite: Kruskal on the Delaunay edges of each side.
   sort_finite(P, s.edges);
   for (const Edge& e : s.edges) {
-    if (uf.join(e.first, e.second)) tree.push_back(e);
+    const bool joined = uf.join(e.first, e.second);
+    if (joined) tree.push_back(e);
+    tell_edge(hook, joined ? trace::Event::tree_edge : trace::Event::cycle_edge, e, uf);
     if (uf.sets() == 1) break;
   }
   // +∞: the sites on Ω.
-  if (!s.omega.empty()) join_infinite(P, uf, tree);
+  if (!s.omega.empty()) join_infinite(P, uf, tree, hook);
   // Beyond infinity: the nearest pair across the sides, between hull vertices (sites.hpp, 2).
   if (uf.sets() > 1) {
     Edge best{Triangulation::none, Triangulation::none};
@@ -113,9 +139,21 @@ std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
           best = {std::min(a, b), std::max(a, b)};
     uf.join(best.first, best.second);
     tree.push_back(best);
+    tell_edge(hook, trace::Event::tree_edge, best, uf);
   }
   return tree;
 }
 //< minimum-spanning-tree
+
+}  // namespace
+
+std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
+  NoTrace none;
+  return spanning_tree(P, none);
+}
+
+std::vector<Edge> minimum_spanning_tree(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+  return spanning_tree(P, hook);
+}
 
 }  // namespace t2

@@ -43,8 +43,7 @@ nlohmann::json to_json(const t2::trace::Step& s) {
   return {{"kind", s.kind},   {"depth", static_cast<int>(s.depth)},
           {"text", s.text},   {"structure", s.structure},
           {"chain", s.chain}, {"closed", s.closed},
-          {"points", s.points}, {"edges", s.edges},
-          {"touched", s.touched}};
+          {"points", s.points}, {"touched", s.touched}};
 }
 
 // A step's sequence `now` as the edit script from `before` (delta.hpp), when that is shorter than
@@ -199,7 +198,7 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
   std::string html(reinterpret_cast<const char*>(player_html), player_html_size);
   // The frames share most of their lines (the Ω ring, the sphere, the glyphs, the points): each
   // distinct line of SVG is stored once, and a frame is the list of its lines' numbers. A step
-  // changes little: its frame and its triangles are stored as the edit from the step before
+  // changes little: its frame, its triangles and its edges are stored as the edit from the step before
   // (delta.hpp), which the player applies.
   // (`number` is hashed: a search tree compared long lines that share their first hundred
   // characters, a fifth of the page's time.)
@@ -210,6 +209,7 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
   std::vector<std::size_t> previous;
   std::vector<t2::trace::Tri> previous_triangles;
   std::vector<std::size_t> previous_chain;  // a page of segments: the status, stored as edits too
+  std::vector<t2::trace::Edge> previous_edges;  // a spanning tree grows an edge a step: edited too
   for (const auto& s : steps) {
     nlohmann::json j = to_json(s);
     const std::string svg = frame_svg(P, s, segments);
@@ -231,8 +231,10 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
       j["chain"] = encoded(previous_chain, s.chain);
       previous_chain = s.chain;
     }
+    j["edges"] = encoded(previous_edges, s.edges);
     previous = std::move(frame);
     previous_triangles = s.triangles;
+    previous_edges = s.edges;
     data["steps"].push_back(std::move(j));
   }
   data["lines"] = std::move(lines);

@@ -24,10 +24,12 @@
 /// are compared exactly (`pair_before`), so the ties go as above; only the choice of which pairs
 /// to compare uses rounded positions, with a proved margin (closest_pair_divide.cpp).
 
+#include <functional>
 #include <span>
 #include <utility>
 
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
@@ -43,5 +45,12 @@ std::pair<Triangulation::Index, Triangulation::Index> closest_pair(std::span<con
 /// whose Cartesian coordinates are within 2⁵⁰⁰ (O(n²) beyond, still exact). The same answer as
 /// `closest_pair_brute`. Throws `BadInput` for fewer than two sites.
 std::pair<Triangulation::Index, Triangulation::Index> closest_pair_divide(std::span<const Point> points);
+
+/// The same, telling `hook` (trace/hook.hpp), in input indices: each split of a side's sites
+/// (`Event::split`), each strip (`Event::strip`), each pair compared with the closest so far
+/// (`Event::compare_pair`, POSITIVE when it is the new closest). Only this overload carries
+/// trace code.
+std::pair<Triangulation::Index, Triangulation::Index> closest_pair_divide(
+    std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
 
 }  // namespace t2

@@ -47,6 +47,7 @@
 /// O(n) for bounded degrees, O(Σ deg(s)²) at worst. Measured: chapter 12, section 6.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -54,6 +55,7 @@
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/proximity/enclosing_circle.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -80,5 +82,11 @@ class UndefinedEmptyCircle : public UndefinedEnclosing {
 /// `BadInput` for no sites or more than 2³² − 2, `UndefinedEmptyCircle` for a site on Ω (the
 /// first), sites on both sides (the first front and the first back site), or all sites equal.
 EmptyCircle largest_empty_circle(std::span<const Point> points);
+
+/// The same, telling `hook` (trace/hook.hpp) every candidate it evaluates (`Event::empty_circle`,
+/// in input indices): each crossing of a Voronoi edge with a hull edge, each Voronoi vertex whose
+/// bound can still beat the best (also those outside the hull, with sign NEGATIVE), or each
+/// midpoint of collinear sites, the circle lent exact. Only this overload carries trace code.
+EmptyCircle largest_empty_circle(std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
 
 }  // namespace t2

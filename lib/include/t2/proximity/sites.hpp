@@ -29,6 +29,7 @@
 ///     hull vertex (dimension 2) or every site (dimension ≤ 1), a superset of those.
 /// *Cost.* Two planar Delaunay triangulations, O(n log n); the Ω sites sorted by direction.
 
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -56,8 +57,13 @@ struct ProximitySites {
   std::vector<Index> back_extremes;
 };
 
+/// What a traced algorithm is shown of each side with sites: its planar Delaunay triangulation
+/// (of the drawn positions) and the input index of each of its vertices.
+using SideView = std::function<void(const Triangulation& tr, std::span<const Triangulation::Index> input_of)>;
+
 /// The candidates of `points` (see the file comment). Throws `BadInput` for more points than
-/// the triangulation's 32-bit indices hold.
-ProximitySites proximity_sites(std::span<const Point> points);
+/// the triangulation's 32-bit indices hold. `view`, when given, is shown each side's
+/// triangulation before it is dropped (the traced spanning tree draws it).
+ProximitySites proximity_sites(std::span<const Point> points, const SideView& view = {});
 
 }  // namespace t2

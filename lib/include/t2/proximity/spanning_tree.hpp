@@ -37,11 +37,13 @@
 /// sites on Ω, in practice a few steps; the beyond-infinity pair over the hull vertices of the
 /// two sides, O(h_F·h_B) (a calipers walk would be linear: not done).
 
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/triangulation/triangulation.hpp"
 
 namespace t2 {
@@ -50,5 +52,13 @@ namespace t2 {
 /// n − 1 pairs (i, j), i < j, in the order Kruskal takes them (see the file comment); empty for
 /// fewer than two points. Never undefined; throws `BadInput` for more than 715 827 882 points.
 std::vector<std::pair<Triangulation::Index, Triangulation::Index>> minimum_spanning_tree(std::span<const Point> points);
+
+/// The same, telling `hook` (trace/hook.hpp), in input indices: each side's Delaunay
+/// triangulation (`Event::candidates`), then every edge Kruskal takes (`Event::tree_edge`: the
+/// equal sites, the Delaunay edges, the pairs at +∞, the pair beyond infinity) or drops
+/// (`Event::cycle_edge`), with the union–find forest after it. Only this overload carries trace
+/// code; the one above has none.
+std::vector<std::pair<Triangulation::Index, Triangulation::Index>> minimum_spanning_tree(
+    std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
 
 }  // namespace t2

@@ -27,6 +27,13 @@ class UnionFind {
     }
     return x;
   }
+  /// The representative of x's set, read only (no halving): what a trace reads (hook.hpp).
+  Index root(Index x) const {
+    while (parent_[x] != x) x = parent_[x];
+    return x;
+  }
+  /// The number of elements.
+  std::size_t size() const { return parent_.size(); }
   /// Merges the sets of a and b; false when they were one set already.
   bool join(Index a, Index b) {
     a = find(a);

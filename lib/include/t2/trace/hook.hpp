@@ -32,15 +32,18 @@
 namespace t2 {
 
 class Triangulation;
+class UnionFind;
+struct EmptyCircle;
 
 namespace trace {
 
 /// What happened. Hull algorithms report the first seven, triangulations the next fourteen,
 /// Welzl's smallest enclosing circle the next two, the walk of point location two more, the
 /// kd-tree's query two more, Fortune's sweep five more (its `chain` is the beach line after the
-/// event: the sites of its arcs left to right, input indices, a site once per arc), and the
-/// sweeps of segment intersection (chapter 13: Bentley–Ottmann, the circular sweep) the last
-/// four. A segment sweep names *segments* by their input index.
+/// event: the sites of its arcs left to right, input indices, a site once per arc), the sweeps
+/// of segment intersection (chapter 13: Bentley–Ottmann, the circular sweep) four more (a
+/// segment sweep names *segments* by their input index), and the proximity problems
+/// (chapter 12) the last seven.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -100,6 +103,21 @@ enum class Event {
   neighbours,     ///< do the status neighbours at[0] (below) and at[1] (above) cross after the
                   ///< event? `sign`: POSITIVE yes (the crossing is queued), NEGATIVE no, ZERO they
                   ///< lie on one line or are parallel (overlaps are found at their endpoints)
+  candidates,     ///< the proximity candidates of one side: `tr` its planar Delaunay triangulation,
+                  ///< vertex v the input point input(v) (Kruskal: its edges are the candidates)
+  tree_edge,      ///< Kruskal takes the edge at[0] at[1]: it joins two components; `forest` after
+  cycle_edge,     ///< Kruskal drops the edge at[0] at[1]: both ends are in one component of
+                  ///< `forest`, and the edge would close a cycle
+  empty_circle,   ///< a candidate of the largest empty circle: `circle` (its exact centre, squared
+                  ///< radius, the sites that define it); at[0..2] a Voronoi vertex's Delaunay
+                  ///< triangle, or at[0], at[1] the sites of a Voronoi edge and at[2], at[3] the
+                  ///< hull edge it crosses (or at[0], at[1] alone: the midpoint of collinear sites).
+                  ///< `sign`: POSITIVE a new best, ZERO no better, NEGATIVE outside the hull
+  split,          ///< divide and conquer splits the sites `chain` (sorted by x) at the vertical
+                  ///< line through at[0], the first site of the right half
+  strip,          ///< the sites `chain` (sorted by y) lie near the line through at[0]: the strip
+  compare_pair,   ///< the pair at[0] at[1] is compared with the closest so far; `sign` POSITIVE:
+                  ///< it is the new closest
 };
 
 /// One event, as the algorithm reports it (see the file comment).
@@ -119,6 +137,8 @@ struct Report {
   const ExactPoint* point = nullptr;       ///< a constructed point, exact (sweeps: the event, a
                                            ///< reported intersection, the centre); lent
   std::span<const std::size_t> through;    ///< a second list of input indices (sweep: see the event)
+  const UnionFind* forest = nullptr;   ///< Kruskal's components now, over input indices (emst)
+  const EmptyCircle* circle = nullptr; ///< a candidate circle, exact (the largest empty circle)
 
   /// The input index of vertex v of `tr`.
   std::size_t input(std::uint32_t v) const { return input_of.empty() ? v : input_of[v]; }
