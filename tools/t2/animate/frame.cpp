@@ -133,7 +133,7 @@ std::string frame_svg(const std::vector<Point>& P, const t2::trace::Step& s,
   for (std::size_t i = 0; i < P.size(); ++i) {
     const bool on_chain = segments.empty() && std::find(s.chain.begin(), s.chain.end(), i) != s.chain.end();
     dr::Style st = dr::Style().color(on_chain ? "#000000" : kGrey).layer(4);
-    if (label[i]) st.label(fmt::format("p{}", i)).label_angle(45);
+    if (label[i]) st.label(fmt::format("p{}", i)).label_angle(45).halo(false);  // no glyph outlines
     f.add(P[i], st);
   }
   for (std::size_t k = 0; k < s.points.size(); ++k)  // the current point first, larger
