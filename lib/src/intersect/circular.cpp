@@ -329,8 +329,10 @@ void Circular::make_groups() {
 template <class H>
 void Circular::check(std::size_t a, std::size_t b, H& tr) {
   const Piece &p = pieces_[a], &q = pieces_[b];
-  const auto told = [&](Sign s) { tell(tr, trace::Event::neighbours, {p.segment, q.segment}, {}, s); };
-  if (collinear(p.segment, q.segment)) return told(ZERO);  // overlaps are found at their ends
+  const auto told = [&](Sign s) {
+    tell(tr, trace::Event::neighbours, {p.segment, q.segment}, {}, s);
+  };
+  if (collinear(p.segment, q.segment)) return told(ZERO);  // overlaps: found at the ends
   const bool p_first = compare(p.end, p.end_rank, q.end, q.end_rank) != POSITIVE;
   const bool swapped = p_first ? side(*q.la, *q.lb, p.end) == NEGATIVE
                                : side(*p.la, *p.lb, q.end) == POSITIVE;
