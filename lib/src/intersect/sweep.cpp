@@ -112,11 +112,13 @@ class Sweep {
   std::vector<Status::iterator> where_;
   std::vector<std::size_t> lower_, inner_;  // reused by handle
   std::vector<Status::node_type> moved_;    // the nodes of inner_, out of the status
+  std::vector<std::uint32_t> slot_;         // segment i's node is moved_[slot_[i]] (else kNoSlot)
+  static constexpr std::uint32_t kNoSlot = std::uint32_t(-1);
   std::vector<std::size_t> order_;          // the segments put back at the event
 };
 
 Sweep::Sweep(const std::vector<Segment>& segments)
-    : status_(StatusLess{this}), where_(segments.size()) {
+    : status_(StatusLess{this}), where_(segments.size()), slot_(segments.size(), kNoSlot) {
   if (segments.size() >= (std::size_t{1} << 31)) throw std::length_error("sweep: too many segments");
   pieces_.resize(segments.size());
   struct End {
@@ -275,7 +277,10 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
     }
   }
   for (std::size_t i : lower_) status_.erase(where_[i]);
-  for (std::size_t i : inner_) moved_.push_back(status_.extract(where_[i]));  // put back below, no allocation
+  for (std::size_t i : inner_) {  // put back below, no allocation
+    slot_[i] = static_cast<std::uint32_t>(moved_.size());
+    moved_.push_back(status_.extract(where_[i]));
+  }
   // The segments through e that go on, in their order just right of e, each put just below
   // `above` (std::set's hint: no search when it is right, and right when they come in order).
   order_.clear();
@@ -283,10 +288,9 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
     if (!pieces_[*i].point) order_.push_back(*i);
   order_.insert(order_.end(), inner_.begin(), inner_.end());
   std::sort(order_.begin(), order_.end(), [this](std::size_t a, std::size_t b) { return below(a, b); });
-  for (std::size_t i : order_) {
-    auto node = std::find_if(moved_.begin(), moved_.end(), [i](const auto& n) { return !n.empty() && n.value() == i; });
-    where_[i] = node != moved_.end() ? status_.insert(above, std::move(*node)) : status_.insert(above, i);
-  }
+  for (std::size_t i : order_)  // each found by its slot: n segments through one point cost O(n log n), not n²
+    where_[i] = slot_[i] != kNoSlot ? status_.insert(above, std::move(moved_[slot_[i]])) : status_.insert(above, i);
+  for (std::size_t i : inner_) slot_[i] = kNoSlot;
   moved_.clear();
   if constexpr (trace::traced<H>) {  // the status after e, lent as a list
     const ExactPoint at = reduced(e.p ? to_exact(*e.p) : to_exact(e.m));
