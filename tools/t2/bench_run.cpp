@@ -3,29 +3,41 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
 #include "process.hpp"
+#include "t2/gen/generate.hpp"
 
 namespace t2bench {
 
+const std::vector<std::string>& segment_input_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (t2::gen::Kind k : t2::gen::all_kinds())
+      if (t2::gen::is_segment_kind(k)) v.emplace_back(t2::gen::name(k));
+    return v;
+  }();
+  return names;
+}
+
 const std::vector<std::string>& input_names() {
-  static const std::vector<std::string> names = {"uniform",  "disk",     "polygon-interior", "normal",
-                                                 "clustered", "kuzmin",  "circle",           "segment",
-                                                 "boundary", "grid",     "duplicates", "cube",
-                                                 "sphere",   "segments", "polygon-edges", "segment-grid",
-                                                 "segments-through-point"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v = {"uniform", "disk",  "polygon-interior", "normal",     "clustered", "kuzmin",
+                                  "circle",  "segment", "boundary",       "grid", "duplicates", "cube", "sphere"};
+    v.insert(v.end(), segment_input_names().begin(), segment_input_names().end());
+    return v;
+  }();
   return names;
 }
 
 t2cli::algorithms::Input input_of(const std::string& input) {
   using t2cli::algorithms::Input;
   if (input == "cube" || input == "sphere") return Input::space;
-  for (const char* s : {"segments", "polygon-edges", "segment-grid", "segments-through-point"})
-    if (input == s) return Input::segments;
-  return Input::plane;
+  const auto& s = segment_input_names();
+  return std::find(s.begin(), s.end(), input) != s.end() ? Input::segments : Input::plane;
 }
 
 std::optional<std::filesystem::path> find_worker() {

@@ -15,9 +15,13 @@
 
 namespace t2bench {
 
-/// The inputs (t2 gen kinds with front points, and clustered; cube and sphere for hull3d).
+/// The inputs (t2 gen kinds with front points, and clustered; cube and sphere for hull3d; the
+/// kinds of segments for intersect).
 const std::vector<std::string>& input_names();
-/// True for the inputs of R³ (cube, sphere), the only ones of hull3d.
+/// The t2 gen kinds of segments (t2::gen::is_segment_kind), the inputs of intersect.
+const std::vector<std::string>& segment_input_names();
+/// What an input is: points of R³ (cube, sphere), segments (segment_input_names) or points of
+/// the plane.
 t2cli::algorithms::Input input_of(const std::string& input);
 
 /// One measurement.

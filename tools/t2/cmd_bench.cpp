@@ -154,10 +154,10 @@ int bench(Options o) {
     throw UsageError(fmt::format("--input {}: one of {}", o.input, fmt::join(inputs, ", ")));
   if (input_of(o.input) != pr->input)
     throw UsageError(fmt::format("--input {}: {} takes {}", o.input, o.algo,
-                                 pr->input == Input::space      ? "points of R^3 (cube, sphere)"
+                                 pr->input == Input::space ? std::string("points of R^3 (cube, sphere)")
                                  : pr->input == Input::segments
-                                     ? "segments (segments, polygon-edges, segment-grid, segments-through-point)"
-                                     : "points of the plane (not cube, sphere, nor a kind of segments)"));
+                                     ? fmt::format("segments ({})", fmt::join(segment_input_names(), ", "))
+                                     : std::string("points of the plane (not cube, sphere, nor a kind of segments)")));
   const std::vector<std::size_t> ns = sizes(o);
   if (ns.front() < 1) throw UsageError("--n must be at least 1");
   Progress::Setting shown{};
