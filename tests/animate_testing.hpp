@@ -2,7 +2,7 @@
 // Shared helpers of the animation tests: a triangulation's finite faces in the form a recorded
 // step holds them, sorted, so that a step's picture and an answer compare as sets; and the steps
 // of a page of `t2 animate`, decoded here apart from the player (its edit scripts applied by
-// this file's own `patched`).
+// this file's own `patched`, its data decoded by this file's own `unpacked`).
 #include <algorithm>
 #include <array>
 #include <sstream>
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <zlib.h>
 
 #include "t2/trace/step.hpp"
 #include "t2/triangulation/triangulation.hpp"
@@ -43,6 +44,29 @@ inline nlohmann::json patched(const nlohmann::json& old, const nlohmann::json& e
   return out;
 }
 
+/// The page's data as page.cpp stores it, base64 (RFC 4648) of zlib-deflated text, decoded: the
+/// base64 digits by their table, the rest by zlib's `uncompress` into a buffer grown until it fits.
+inline std::string unpacked(const std::string& base64) {
+  const std::string digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<unsigned char> bytes;
+  unsigned bits = 0;
+  int have = 0;
+  for (char c : base64) {
+    if (c == '=' || c == '\n' || c == ' ') continue;
+    const auto d = digits.find(c);
+    if (d == std::string::npos) throw std::runtime_error("the page's data is not base64");
+    bits = (bits << 6 | static_cast<unsigned>(d)) & 0xffffff;
+    if ((have += 6) >= 8) bytes.push_back(static_cast<unsigned char>(bits >> (have -= 8)));
+  }
+  for (uLongf size = 8 * bytes.size() + 1024;; size *= 2) {
+    std::string out(size, '\0');
+    uLongf got = size;
+    const int rc = uncompress(reinterpret_cast<Bytef*>(out.data()), &got, bytes.data(), bytes.size());
+    if (rc == Z_OK) return out.substr(0, got);
+    if (rc != Z_BUF_ERROR) throw std::runtime_error("the page's data does not inflate");
+  }
+}
+
 /// One step of a page: its JSON, its frame's SVG, its triangles and its edges in focus, rebuilt.
 struct PageStep {
   nlohmann::json step;                          ///< the step as the page holds it
@@ -51,13 +75,18 @@ struct PageStep {
   std::vector<std::array<std::size_t, 2>> edges;      ///< the edges in focus
 };
 
-/// The steps of a page of `t2 animate`, in order.
-inline std::vector<PageStep> page_steps(const std::string& html) {
-  const std::string open = "<script type=\"application/json\" id=\"t2-data\">";
+/// The data of a page of `t2 animate` as the JSON text that the page packed.
+inline std::string page_data(const std::string& html) {
+  const std::string open = "<script type=\"application/octet-stream\" id=\"t2-data\">";
   const auto at = html.find(open);
   const auto end = html.find("</script>", at);
   if (at == std::string::npos || end == std::string::npos) throw std::runtime_error("no data in the page");
-  const nlohmann::json data = nlohmann::json::parse(html.substr(at + open.size(), end - at - open.size()));
+  return unpacked(html.substr(at + open.size(), end - at - open.size()));
+}
+
+/// The steps of a page of `t2 animate`, in order.
+inline std::vector<PageStep> page_steps(const std::string& html) {
+  const nlohmann::json data = nlohmann::json::parse(page_data(html));
   std::vector<std::string> style;  // class k of the frames' style sheet: ".fk{style}" per line
   std::istringstream css(data.value("css", std::string()));
   for (std::string rule; std::getline(css, rule);) {

@@ -140,8 +140,9 @@ TEST_F(AnimateSweep, EndsWithTheAnswerOfT2Triangulate) {
     return expected;
   };
   const auto want = answer_of("d.t2");
-  const std::string html = slurp(dir_ / "s.html");
-  const auto steps = page_steps(html);  // decoded apart from the player (animate_testing.hpp)
+  const std::string page = slurp(dir_ / "s.html");
+  const auto steps = page_steps(page);  // decoded apart from the player (animate_testing.hpp)
+  const std::string html = page_data(page);  // the steps as JSON text
   ASSERT_GE(steps.size(), 3u);
   EXPECT_EQ(steps.back().triangles, want);                 // the answer
   EXPECT_EQ(steps[steps.size() - 2].triangles, want);      // and the last fan

@@ -94,8 +94,9 @@ TEST_F(AnimateT2, EndsWithTheAnswerOfT2Triangulate) {
     std::istringstream lines(tri.out);
     for (std::size_t a, b, c; lines >> a >> b >> c;) expected.push_back({a, b, c});
     std::sort(expected.begin(), expected.end());
-    const std::string html = slurp(dir_ / "t.html");
-    const auto steps = page_steps(html);  // decoded apart from the player (animate_testing.hpp)
+    const std::string page = slurp(dir_ / "t.html");
+    const auto steps = page_steps(page);  // decoded apart from the player (animate_testing.hpp)
+    const std::string html = page_data(page);  // the steps as JSON text
     ASSERT_FALSE(steps.empty());
     EXPECT_EQ(steps.back().step.at("kind"), "answer") << kind;
     EXPECT_EQ(steps.back().triangles, expected) << kind;

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -191,6 +193,28 @@ std::string lighter(std::string_view line, std::map<std::string, std::size_t, st
   return out;
 }
 
+// The page's data deflated (zlib's format, at its best compression: the same text gives the same
+// bytes, so a page is as deterministic as its frames) and written in base64 (RFC 4648), which the
+// player inflates with the browser's DecompressionStream. The SVG lines of the frames repeat
+// their commands, classes and digits: at 200 points a Delaunay page's data shrinks about fivefold.
+std::string packed(const std::string& text) {
+  uLongf size = compressBound(text.size());
+  std::vector<unsigned char> z(size);
+  if (compress2(z.data(), &size, reinterpret_cast<const Bytef*>(text.data()), text.size(), Z_BEST_COMPRESSION) != Z_OK)
+    throw std::runtime_error("zlib could not deflate the page's data");
+  static constexpr char digit[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((size + 2) / 3 * 4);
+  for (uLongf k = 0; k < size; k += 3) {
+    const unsigned v = z[k] << 16 | (k + 1 < size ? z[k + 1] << 8 : 0) | (k + 2 < size ? z[k + 2] : 0);
+    out += digit[v >> 18 & 63];
+    out += digit[v >> 12 & 63];
+    out += k + 1 < size ? digit[v >> 6 & 63] : '=';
+    out += k + 2 < size ? digit[v & 63] : '=';
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string page(const std::string& title, const std::vector<t2::Point>& P, const std::vector<t2::trace::Step>& steps,
@@ -241,13 +265,10 @@ std::string page(const std::string& title, const std::vector<t2::Point>& P, cons
   std::string css;  // the frames' styles, one class each (`lighter`)
   for (const auto& [style, k] : classes) css += fmt::format(".f{}{{{}}}\n", k, style);
   data["css"] = css;
-  std::string json = data.dump();
-  for (auto at = json.find('<'); at != std::string::npos; at = json.find('<', at))  // no "</script" nor "<!--"
-    json.replace(at, 1, "\\u003c");
   const std::string t = escape(title);
   replace(html, "<!--T2_TITLE-->", t);
   replace(html, "<!--T2_TITLE-->", t);
-  replace(html, "/*T2_DATA*/", json);
+  replace(html, "/*T2_DATA*/", packed(data.dump()));
   return html;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The page of `t2 animate`: the player (tools/t2/animate/player.html, compiled in) filled with
-// the recorded steps as JSON and one SVG frame per step. One self-contained HTML file.
+// the recorded steps as JSON (deflated, in base64) and one SVG frame per step. One self-contained
+// HTML file.
 #include <string>
 #include <vector>
 
