@@ -9,7 +9,7 @@
 // S the answer's size (hull vertices, finite triangles), W and C the wall and CPU seconds of the
 // run alone, R the peak resident memory once the input was made. `t2 bench` runs every
 // measurement in a fresh worker and reads the worker's peak memory from wait4's rusage, so the
-// peaks of different runs never add up. This program links CGAL and qhull: they are peers of the
+// peaks of different runs never add up. This program links CGAL, qhull and GEOS: they are peers of the
 // benchmarks, never dependencies of the library or of the `t2` tool.
 //
 // PROBLEM IMPL: a problem of the registry (tools/t2/algorithms/registry.hpp: hull, layers,
@@ -17,7 +17,7 @@
 // with a timed run (its `time`), or a peer registered in algorithms/peers.cpp, whose run is here:
 // cgal (hull, delaunay, hull3d, intersect, locate, locate-build, sec), qhull (hull, hull3d),
 // nanoflann and rtree (range: range_peers.hpp), boost (voronoi-front: Boost.Polygon's sweep),
-// raw and exact
+// geos (lec: GEOS's approximate largest empty circle), raw and exact
 // (hull, delaunay: t2's own code on plain double predicates, inexact, or on exact arithmetic at
 // every call, no filter).
 // A problem of space takes points of R^3 (INPUT cube or sphere), one of segments the INPUT
@@ -42,9 +42,11 @@
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
+#include <geos_c.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <exception>
@@ -329,6 +331,37 @@ Run voronoi_peer(const std::string& impl, const std::vector<t2::Point>& P) {
   };
 }
 
+// GEOS's largest empty circle (GEOSLargestEmptyCircle_r: a grid refined by branch and bound, its
+// centre in the obstacles' hull as t2's, found to within a tolerance, in doubles): the points as
+// one MultiPoint (made before the clock), the tolerance a thousandth of the mean spacing of the
+// points, sqrt(area of their box / n). Not exact (Peer::exact is false): its size is 1, the circle.
+Run lec_peer(const std::string& impl, const std::vector<t2::Point>& P) {
+  if (impl != "geos" || P.empty()) return nullptr;
+  struct Geos {
+    GEOSContextHandle_t h = GEOS_init_r();
+    GEOSGeometry* points = nullptr;
+    ~Geos() {
+      if (points != nullptr) GEOSGeom_destroy_r(h, points);
+      GEOS_finish_r(h);
+    }
+  };
+  auto g = std::make_shared<Geos>();
+  std::vector<GEOSGeometry*> each;
+  double x0 = P[0].x(), x1 = x0, y0 = P[0].y(), y1 = y0;
+  for (const auto& p : P) {  // w = 1 (make_input)
+    each.push_back(GEOSGeom_createPointFromXY_r(g->h, p.x(), p.y()));
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  }
+  g->points = GEOSGeom_createCollection_r(g->h, GEOS_MULTIPOINT, each.data(), static_cast<unsigned>(each.size()));
+  const double tolerance = 1e-3 * std::sqrt((x1 - x0) * (y1 - y0) / static_cast<double>(P.size()));
+  return [g, tolerance]() -> std::size_t {
+    GEOSGeometry* circle = GEOSLargestEmptyCircle_r(g->h, g->points, nullptr, tolerance);
+    if (circle == nullptr) throw std::runtime_error("GEOS found no largest empty circle");
+    GEOSGeom_destroy_r(g->h, circle);
+    return 1;
+  };
+}
+
 // The run of IMPL on PROBLEM's input: a registered t2 algorithm's, else a peer's.
 Run prepare(const std::string& problem, const std::string& impl, t2cli::algorithms::BenchInput& in) {
   namespace reg = t2cli::algorithms;
@@ -345,6 +378,7 @@ Run prepare(const std::string& problem, const std::string& impl, t2cli::algorith
           : problem == "sec"      ? sec_peer(impl, in.points)
           : problem == "range"    ? t2bench::range_peer(impl, in.points)
           : problem == "voronoi-front" ? voronoi_peer(impl, in.points)
+          : problem == "lec"      ? lec_peer(impl, in.points)
                                   : nullptr;
   if (!run) throw Usage("no implementation " + impl + " of " + problem);
   return run;

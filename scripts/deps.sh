@@ -3,10 +3,10 @@
 set -euo pipefail
 packages=(
   cmake g++ make ninja-build ccache pkg-config git ca-certificates
-  libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcairo2-dev libgmp-dev zlib1g-dev
   doxygen pandoc libjs-katex librsvg2-bin fonts-dejavu-core
   clang libclang-rt-14-dev bubblewrap zip unzip
-  libcgal-dev libboost-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libqhull-dev libnanoflann-dev
+  libcgal-dev libboost-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libqhull-dev libnanoflann-dev libgeos-dev
   chromium
 )
 missing=()

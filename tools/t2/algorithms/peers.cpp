@@ -1,6 +1,6 @@
 // The peers of `t2 bench` that are not t2's algorithms: what they are called and what they
-// solve. Their runs are the worker's (bench/t2_bench_worker.cpp), which alone links CGAL and
-// qhull (and alone includes nanoflann, Boost.Geometry and Boost.Polygon, header-only); tests/test_registry.cpp
+// solve. Their runs are the worker's (bench/t2_bench_worker.cpp), which alone links CGAL, qhull
+// and GEOS (and alone includes nanoflann, Boost.Geometry and Boost.Polygon, header-only); tests/test_registry.cpp
 // checks that the worker runs every one registered here.
 #include "algorithms/registry.hpp"
 
@@ -21,6 +21,10 @@ T2_PEER({"rtree", {"range"}, "Boost.Geometry's rtree<rstar<16>>, bulk loaded, co
 T2_PEER({"boost", {"voronoi-front"},
          "Boost.Polygon's construct_voronoi (Fortune's sweep) on the points rounded to the grid 2^-24 (it takes "
          "32-bit integers only): the vertex count of the rounded points",
+         false});
+T2_PEER({"geos", {"lec"},
+         "GEOS 3.11's GEOSLargestEmptyCircle (a grid refined by branch and bound, centre in the hull, in doubles) "
+         "to within a thousandth of the points' mean spacing",
          false});
 T2_PEER({"raw", {"hull", "delaunay"},
          "ALGO's t2 code (convex_hull, delaunay) on plain double predicates (naive, inexact)", false, true});

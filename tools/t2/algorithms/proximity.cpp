@@ -462,7 +462,8 @@ T2_ALGORITHM({.name = "lec",  // what `t2 lec` runs
                 return [&P = in.points] {
                   return t2::largest_empty_circle(std::span<const t2::Point>(P)).on_circle.size();
                 };
-              }});
+              },
+              .peers = {"geos"}});
 
 }  // namespace
 }  // namespace t2cli::algorithms
