@@ -184,6 +184,22 @@ TEST_F(AnimateCli, BadInputNoHullAndTooManyPointsLeaveTheOutputAlone) {
   EXPECT_EQ(files(), (std::vector<std::string>{"anti.t2", "bad.t2", "many.t2", "out.html"}));  // no temporary left
 }
 
+// The house issue's weight: a page of 200 uniform points at most 1 MB, for the algorithms whose
+// debugging steps each draw a new circle (an in-circle test, a candidate circle, a circle event).
+// The unit run takes 40 points and 320 KB (their pages unpacked weigh 0.44-0.85 MB); the long run
+// the 200 points and the 1 MB.
+TEST_F(AnimateCli, PagesOfTwoHundredPointsWeighAtMostOneMegabyte) {
+  const std::size_t n = testing::scale() == 1 ? 40 : 200;
+  ASSERT_EQ(t2("gen uniform --n " + std::to_string(n) + " --seed 3 -o u.t2").status, 0);
+  for (const char* algo : {"delaunay", "sec", "fortune"}) {
+    const Result r = t2(std::string("animate ") + algo + " u.t2 -o w.html");
+    ASSERT_EQ(r.status, 0) << algo << ": " << r.err;
+    EXPECT_LE(std::filesystem::file_size(dir_ / "w.html"), std::min<std::size_t>(n * 8000, 1000000))
+        << algo << " at " << n << " points";
+    EXPECT_GE(page_steps(slurp(dir_ / "w.html")).size(), n) << algo;  // every step is in it
+  }
+}
+
 TEST_F(AnimateCli, DegenerateInputsStillAnimate) {
   write("one.t2", "0 0\n0 0\n");
   write("line.t2", "0 0\n1 1\n2 2\n");
