@@ -95,7 +95,7 @@ TEST_F(AnimateCli, HullAlgorithmsEndWithTheHullOfTHull) {
   generate("both.t2", gen::Kind::both_sides, animated_points(), 3);
   generate("back.t2", gen::Kind::both_sides, animated_points(), 4, 1.0);  // every point behind
   for (const char* file : {"u.t2", "both.t2", "back.t2"})
-    for (const std::string algo : {"jarvis", "graham", "merge"}) {
+    for (const std::string algo : {"jarvis", "graham", "merge", "chan"}) {
       const std::string what = algo + " " + file;
       const Result r = t2("animate " + algo + " " + file + " -o out.html");
       ASSERT_EQ(r.status, 0) << what << r.err;
@@ -234,7 +234,7 @@ TEST_F(AnimateCli, TheChaptersWatchItCommandsRun) {
       const std::string algo = (*m)[1], file = (*m)[2], out = (*m)[3];
       EXPECT_TRUE(algo == "jarvis" || algo == "graham" || algo == "merge" || algo == "triangulate" ||
                   algo == "triangulate-t2" || algo == "delaunay" || algo == "sec" || algo == "emst" || algo == "lec" ||
-                  algo == "closest-pair-divide")
+                  algo == "closest-pair-divide" || algo == "chan")
           << ch << ": " << m->str();
       EXPECT_NO_THROW((void)read_scene(dir_ / file)) << ch << ": " << m->str();
       if (testing::scale() == 1) continue;

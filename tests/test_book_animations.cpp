@@ -109,7 +109,7 @@ TEST(BookAnimationsOfThisRepository, EveryAlgorithmIsAnimatedAndLinked) {
     for (std::sregex_iterator m(md.begin(), md.end(), link), end; m != end; ++m) linked.insert((*m)[1]);
   }
   EXPECT_EQ(algos,
-            (std::set<std::string>{"closest-pair-divide", "delaunay", "emst", "fortune", "graham", "intersect",
+            (std::set<std::string>{"chan", "closest-pair-divide", "delaunay", "emst", "fortune", "graham", "intersect",
                                    "intersect-circular", "jarvis", "kdtree", "lec", "merge", "sec", "triangulate",
                                    "triangulate-t2", "walk"}));
   EXPECT_EQ(linked, pages);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -188,6 +189,52 @@ TEST(Chan, OrientationTestsAndTrace) {
   CountingTraits::calls = 0;
   EXPECT_EQ(convex_hull<CountingTraits>(P, HullAlgorithm::chan).size(), 4u);
   EXPECT_LT(double(CountingTraits::calls), 12 * double(P.size()) * 2) << CountingTraits::calls;
+}
+
+// What `t2 animate chan` narrates (chan.hpp's trace), checked by brute force: every group's hull
+// is Graham's hull of its points, the groups of a round cover the input in order, and every
+// tangent is Jarvis's rule on the hull of the group that holds it.
+TEST(Chan, TraceTellsEachGroupHullAndTangent) {
+  gen::Options o;
+  o.n = 300;
+  o.seed = 7;
+  const auto P = gen::points(Kind::uniform, o);
+  struct Told {
+    std::vector<std::vector<std::size_t>> hulls, points;  // the group hulls, their points
+    std::vector<std::array<std::size_t, 2>> tangents;
+    std::vector<std::size_t> groups_at;                   // groups told before each tangent
+    void operator()(const trace::Report& r) {
+      if (r.event == trace::Event::group_hull) {
+        hulls.emplace_back(r.chain.begin(), r.chain.end());
+        points.emplace_back(r.through.begin(), r.through.end());
+      } else if (r.event == trace::Event::tangent) {
+        tangents.push_back({r.at[0], r.at[1]});
+        groups_at.push_back(hulls.size());
+      }
+    }
+  } told;
+  const auto h = chan(std::span<const Point>(P), all(P.size()), front_chart(), told);
+  EXPECT_TRUE(same_cycle(at(P, h), at(P, convex_hull(P, HullAlgorithm::graham))));
+  ASSERT_GT(told.hulls.size(), 2u);
+  ASSERT_FALSE(told.tangents.empty());
+  std::size_t next = 0;  // the groups of a round deal the points 0, 1, 2, ... in order
+  for (std::size_t g = 0; g < told.hulls.size(); ++g) {
+    if (told.points[g].front() == 0) next = 0;  // a new round
+    for (std::size_t i : told.points[g]) EXPECT_EQ(i, next++) << "group " << g;
+    EXPECT_TRUE(same_cycle(at(P, told.hulls[g]),
+                           at(P, told.points[g]).empty() ? std::vector<Point>{}
+                                                         : at(P, graham(std::span<const Point>(P), told.points[g],
+                                                                        front_chart()))))
+        << "group " << g;
+  }
+  for (std::size_t t = 0; t < told.tangents.size(); ++t) {
+    const auto [u, c] = told.tangents[t];
+    std::size_t g = told.groups_at[t];  // the round's groups are the last ones told; find c's
+    while (g > 0 && std::find(told.hulls[g - 1].begin(), told.hulls[g - 1].end(), c) == told.hulls[g - 1].end()) --g;
+    ASSERT_GT(g, 0u) << "tangent " << t << ": p" << c << " is on no group hull";
+    const auto& C = told.hulls[g - 1];
+    EXPECT_EQ(C[brute_tangent(P, C, P[u])], c) << "tangent " << t << " from p" << u;
+  }
 }
 
 }  // namespace

@@ -58,6 +58,97 @@ void record_merge(const Points& P, const std::string& name, tr::Recording& rec) 
   record_hull_answer(h, rec);
 }
 
+// Chan's algorithm narrated (chan.hpp's trace): each round's group hulls, drawn over every later
+// step of the round; each vertex of the wrap (lecture) after the tangents to the group hulls
+// that chose it (debugging); a round that fails; Graham's own steps when one group holds all.
+class ChanRecorder {
+ public:
+  ChanRecorder(const Points& P, tr::Recording& rec) : P_(P), rec_(rec), graham_(tr::HullAlgo::graham, P, rec) {}
+
+  void operator()(const tr::Report& r) {
+    const std::vector<std::size_t> chain(r.chain.begin(), r.chain.end());
+    if (r.event == tr::Event::group_hull) {
+      if (groups_.empty() || wrapping_) new_round(r.through.size());
+      groups_.push_back(chain);
+      tr::Step s = make_step("group",
+                             fmt::format("Round {} (groups of m = {}): group {} of {} points, its hull by Graham's scan: {}.",
+                                         round_, m_, groups_.size(), r.through.size(), point_list(chain)),
+                             "group hull");
+      s.depth = groups_.size() == 1 ? tr::Depth::lecture : tr::Depth::debugging;
+      s.chain = chain;
+      s.closed = true;
+      s.points.assign(r.through.begin(), r.through.end());
+      add(std::move(s));
+    } else if (r.event == tr::Event::vertex && !groups_.empty()) {
+      wrapping_ = true;
+      tr::Step s = make_step("vertex",
+                             fmt::format("p{} is hull vertex {} of round {}'s wrap: from it, Jarvis takes the best of "
+                                         "the {} group hulls' tangents.",
+                                         r.at[0], chain.size(), round_, groups_.size()),
+                             "hull so far");
+      s.chain = chain;
+      s.points = {r.at[0]};
+      add(std::move(s));
+    } else if (r.event == tr::Event::tangent) {
+      tr::Step s = make_step("tangent", fmt::format("The tangent from p{} to a group's hull touches p{}.", r.at[0], r.at[1]),
+                             "hull so far");
+      s.depth = tr::Depth::debugging;
+      s.chain = chain;
+      s.points = {r.at[1], r.at[0]};
+      s.edges = {{r.at[0], r.at[1]}};
+      add(std::move(s));
+    } else {
+      if (wrapping_) new_round(P_.size());  // m² ≥ n: one group, Graham's scan of every point
+      wrapping_ = false;
+      groups_.clear();
+      graham_(r);
+    }
+  }
+
+ private:
+  // A round begins with groups of m points (m ≥ n: one group); after a wrap that did not close.
+  void new_round(std::size_t m) {
+    if (wrapping_)
+      rec_.add(make_step("square",
+                         fmt::format("The wrap did not close within m = {} vertices: the hull has more, so m is "
+                                     "squared{}.",
+                                     m_, m >= P_.size() ? ": one group holds every point, and Graham's scan ends it"
+                                                        : " and the groups are made again"),
+                         "hull so far"));
+    groups_.clear();
+    wrapping_ = false;
+    ++round_;
+    m_ = m;
+  }
+  void add(tr::Step s) {
+    s.overlay = polygons_scene(P_, groups_);
+    rec_.add(std::move(s));
+  }
+
+  const Points& P_;
+  tr::Recording& rec_;
+  tr::HullRecorder graham_;
+  std::vector<std::vector<std::size_t>> groups_;  // this round's group hulls so far
+  std::size_t round_ = 0, m_ = 0;
+  bool wrapping_ = false;  // the round's wrap has begun
+};
+
+void record_chan(const Points& P, const std::string& name, tr::Recording& rec) {
+  std::vector<std::size_t> h;
+  try {
+    const t2::Chart chart = t2::chart_for(std::span<const t2::Point>(P), h);  // throws when no hull
+    if (h.size() != 1) {
+      std::vector<std::size_t> idx(P.size());
+      std::iota(idx.begin(), idx.end(), std::size_t{0});
+      ChanRecorder r(P, rec);
+      h = t2::chan(std::span<const t2::Point>(P), idx, chart, r);
+    }
+  } catch (const t2::NoHull& e) {
+    throw t2::Undefined(fmt::format("{}: no convex hull: {}", name, e.what()));
+  }
+  record_hull_answer(h, rec);
+}
+
 std::string named(HullAlgorithm a) { return std::string(t2::name(a)); }
 
 T2_ALGORITHM({.name = "hull",  // what `t2 hull` runs (HullAlgorithm::automatic)
@@ -107,6 +198,7 @@ T2_ALGORITHM({.name = named(HullAlgorithm::chan),
               .summary = "Chan's algorithm, O(n log h): Graham on groups, Jarvis with tangents",
               .title = "Chan's algorithm",
               .run = run(HullAlgorithm::chan),
+              .record = record_chan,
               .time = timed(HullAlgorithm::chan),
               .peers = {"graham", "cgal"}});
 

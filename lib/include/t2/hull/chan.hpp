@@ -69,9 +69,9 @@ std::size_t tangent(std::span<const Point> P, const std::vector<std::size_t>& C,
 
 /// Chan's algorithm on the points P[i], i in `idx`, in `chart`: the strict hull vertices,
 /// counter-clockwise from the first in the chart's order (as `graham` and `jarvis`). O(n log h)
-/// for h hull vertices. The trace hears each vertex of each round's wrap (a round that fails
-/// is followed by one that starts again from the first vertex), or Graham's steps when a round
-/// has one group (m ≥ n: that group's hull is the answer).
+/// for h hull vertices. The trace hears each group's hull (`group_hull`), then each vertex of the
+/// round's wrap and the tangents from it (a round that fails is followed by the next round's
+/// groups), or Graham's steps when a round has one group (m ≥ n: that group's hull is all).
 template <class K = HullTraits, class Tr = NoTrace>
 std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::size_t>& idx, const Chart& chart,
                               Tr&& trace = {}) {
@@ -90,6 +90,11 @@ std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::s
       const auto first = idx.begin() + static_cast<std::ptrdiff_t>(g);
       const auto last = idx.begin() + static_cast<std::ptrdiff_t>(std::min(n, g + m));
       groups.push_back(graham<K>(P, std::vector<std::size_t>(first, last), chart));
+      tell(trace, [&] {
+        trace::Report r = trace::about(trace::Event::group_hull, {}, groups.back());
+        r.through = {&*first, static_cast<std::size_t>(last - first)};  // its points
+        return r;
+      });
     }
     hull.clear();
     std::size_t u = start;
@@ -101,6 +106,7 @@ std::vector<std::size_t> chan(std::span<const Point> P, const std::vector<std::s
         const std::size_t j = detail::tangent<K>(P, C, P[u], order);
         if (j == C.size()) continue;  // this group is u alone
         const std::size_t c = C[j];
+        tell(trace, trace::Event::tangent, {u, c}, hull);
         if (q == u) {
           q = c;
           continue;

@@ -42,8 +42,9 @@ namespace trace {
 /// kd-tree's query two more, Fortune's sweep five more (its `chain` is the beach line after the
 /// event: the sites of its arcs left to right, input indices, a site once per arc), the sweeps
 /// of segment intersection (chapter 13: Bentley–Ottmann, the circular sweep) four more (a
-/// segment sweep names *segments* by their input index), and the proximity problems
-/// (chapter 12) the last seven.
+/// segment sweep names *segments* by their input index), the proximity problems (chapter 12)
+/// seven more, and Chan's hull the last two (with `vertex`, and Graham's events when one group
+/// holds every point).
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -118,6 +119,10 @@ enum class Event {
   strip,          ///< the sites `chain` (sorted by y) lie near the line through at[0]: the strip
   compare_pair,   ///< the pair at[0] at[1] is compared with the closest so far; `sign` POSITIVE:
                   ///< it is the new closest
+  group_hull,     ///< Chan: the hull of one group of this round is `chain` (Graham's scan of the
+                  ///< group's points `through`); the first group of a round holds m points
+  tangent,        ///< Chan: from the hull vertex at[0], the tangent to a group's hull touches
+                  ///< at[1] (the group's best next vertex for Jarvis); `chain` the hull so far
 };
 
 /// One event, as the algorithm reports it (see the file comment).
