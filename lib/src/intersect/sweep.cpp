@@ -279,7 +279,9 @@ void Sweep::check(std::size_t a, std::size_t b, H& tr) {
     return true;
   };
   // Or pushed for them before, and a third segment passed between them since: ahead, it waits.
-  const auto pushed = [&](std::uint32_t s, std::uint32_t t) { return before_[s].id != kNoSlot && before_[s].other == t; };
+  const auto pushed = [&](std::uint32_t s, std::uint32_t t) {
+    return before_[s].id != kNoSlot && before_[s].other == t;
+  };
   if (ahead && !pushed(u, o) && !pushed(o, u) && !waits(pa, o, u) && !waits(pb, u, o)) {
     if (taken_.size() >= kNoSlot) throw std::length_error("sweep: too many crossings");
     e.id = static_cast<std::uint32_t>(taken_.size());
