@@ -40,8 +40,8 @@
 // 2.63M points, now 2.72M). The pending crossing of a segment in the status is ahead of E, or
 // is E: the segment passes through it, so at that event it is in the run through E (handle)
 // and forgets it, or ends there and leaves the status. So a segment of the status whose
-// pending crossing has been taken out of the heap passes through E, as do the segments already
-// found through E at E (`through_`): both are known without a predicate. Scheduling is the
+// pending crossing has been taken out of the heap passes through E, as do the segments
+// being put back at E (`Piece::through`): both are known without a predicate. Scheduling is the
 // only change: the points in the heap, hence the events, the output and the trace, are those
 // of the sweep that pushes every pair.
 //
@@ -66,12 +66,22 @@ namespace t2 {
 // other sweeps, whose helpers have the same names.
 namespace plane_sweep {
 
-/// A front segment from its lower-left end to its upper-right end (the xy order), in doubles.
+/// What segment i knows of a crossing waiting in the heap that lies on it: its `id`, and
+/// `other`, a segment through that crossing on another line than i's.
+struct Pending {
+  std::uint32_t id = std::uint32_t(-1), other = std::uint32_t(-1);  ///< none: both -1
+};
+
+/// A front segment from its lower-left end to its upper-right end (the xy order), in doubles,
+/// with what the sweep knows of it: 64 bytes, one cache line for each status comparison.
 struct Piece {
   Point left{1, 0, 0}, right{1, 0, 0};
+  Pending pending;        ///< a crossing ahead on it (file comment), or none
   bool vertical = false;  ///< left and right have the same x
   bool point = false;     ///< zero length: never in the status
+  bool through = false;   ///< put back at the current event: it passes through it
 };
+static_assert(sizeof(Piece) <= 64);
 
 /// An event: an endpoint p of segment i (a point of `pieces_`) or the crossing m of segments
 /// i < j.
@@ -80,12 +90,6 @@ struct Event {
   JoinMeet<double> m{};      ///< the crossing (front: m.w is POSITIVE)
   std::uint32_t i = 0, j = 0;
   std::uint32_t id = 0;      ///< a crossing: its number in the heap, one for each push
-};
-
-/// What segment i knows of a crossing waiting in the heap that lies on it: its `id`, and
-/// `other`, a segment through that crossing on another line than i's.
-struct Pending {
-  std::uint32_t id, other;
 };
 
 /// Endpoint events with equal points are one group: its point and the segments starting there.
@@ -131,8 +135,9 @@ class Sweep {
   void check(std::size_t a, std::size_t b, H& tr);
   /// Segment s now knows q pending on it (the one it knew goes to before_).
   void learn(std::uint32_t s, Pending q) {
-    if (pending_[s].id != kNoSlot && pending_[s].id != q.id) before_[s] = pending_[s];
-    pending_[s] = q;
+    Pending& p = pieces_[s].pending;
+    if (p.id != kNoSlot && p.id != q.id) before_[s] = p;
+    p = q;
   }
 
   std::vector<Piece> pieces_;
@@ -147,16 +152,13 @@ class Sweep {
   std::vector<std::uint32_t> slot_;         // segment i's node is moved_[slot_[i]] (else kNoSlot)
   static constexpr std::uint32_t kNoSlot = std::uint32_t(-1);
   std::vector<std::size_t> order_;          // the segments put back at the event
-  std::vector<Pending> pending_;            // per segment: a crossing ahead on it, or kNoSlot
   std::vector<Pending> before_;             // per segment: the one pending before (in the heap if ahead)
   std::vector<std::uint8_t> taken_;         // per heap id: 1 once taken out of the heap
-  std::vector<std::uint64_t> through_;      // through_[i] == event_: i is through the current event
-  std::uint64_t event_ = 0;                 // the number of the current event
 };
 
 Sweep::Sweep(const std::vector<Segment>& segments)
     : status_(StatusLess{this}), where_(segments.size()), slot_(segments.size(), kNoSlot),
-      pending_(segments.size(), Pending{kNoSlot, kNoSlot}), before_(pending_), through_(segments.size(), 0) {
+      before_(segments.size()) {
   if (segments.size() >= (std::size_t{1} << 31)) throw std::length_error("sweep: too many segments");
   pieces_.resize(segments.size());
   struct End {
@@ -219,10 +221,9 @@ Sign Sweep::compare_events(const Event& a, const Event& b) const {
 /// upper end, and every event in between lies on it): ZERO. So do the ends of i and the
 /// crossings of i, known without a predicate.
 Sign Sweep::side_of_event(std::size_t i) const {
-  if (through_[i] == event_) return ZERO;
   const Piece& p = pieces_[i];
-  if (p.vertical) return ZERO;
-  if (pending_[i].id != kNoSlot && taken_[pending_[i].id]) return ZERO;
+  if (p.through || p.vertical) return ZERO;
+  if (p.pending.id != kNoSlot && taken_[p.pending.id]) return ZERO;
   if (current_.p) {
     if (current_.p == &p.left || current_.p == &p.right) return ZERO;
     return orient(p.left, p.right, *current_.p);
@@ -250,7 +251,7 @@ void Sweep::check(std::size_t a, std::size_t b, H& tr) {
   const auto told = [&](Sign s) { tell(tr, trace::Event::neighbours, {a, b}, {}, s); };
   const Sign w = turn(pieces_[a].left, pieces_[a].right, pieces_[b].left, pieces_[b].right);
   if (w == ZERO) return told(ZERO);  // parallel or collinear: overlaps are found at their endpoints
-  const Pending pa = pending_[a], pb = pending_[b];
+  const Pending pa = pieces_[a].pending, pb = pieces_[b].pending;
   // Waiting: their lines meet there only.
   if ((pa.id != kNoSlot && (pa.id == pb.id || pa.other == b)) || (pb.id != kNoSlot && pb.other == a))
     return told(POSITIVE);
@@ -337,12 +338,9 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
       });
     }
   }
-  // Known through e from here on; a crossing pending on them is e or behind it.
-  for (const std::uint32_t* i = upper_begin; i != upper_end; ++i) through_[*i] = event_;
   for (std::size_t i : lower_) status_.erase(where_[i]);
-  for (std::size_t i : inner_) {  // put back below, no allocation
-    through_[i] = event_;
-    pending_[i] = {kNoSlot, kNoSlot};
+  for (std::size_t i : inner_) {  // put back below, no allocation; a crossing pending on it is e
+    pieces_[i].pending = Pending{};
     slot_[i] = static_cast<std::uint32_t>(moved_.size());
     moved_.push_back(status_.extract(where_[i]));
   }
@@ -352,10 +350,12 @@ void Sweep::handle(const Event& e, const std::uint32_t* upper_begin, const std::
   for (const std::uint32_t* i = upper_begin; i != upper_end; ++i)
     if (!pieces_[*i].point) order_.push_back(*i);
   order_.insert(order_.end(), inner_.begin(), inner_.end());
+  for (std::size_t i : order_) pieces_[i].through = true;  // every key compared below
   std::sort(order_.begin(), order_.end(), [this](std::size_t a, std::size_t b) { return below(a, b); });
   for (std::size_t i : order_)  // each found by its slot: n segments through one point cost O(n log n), not n²
     where_[i] = slot_[i] != kNoSlot ? status_.insert(above, std::move(moved_[slot_[i]])) : status_.insert(above, i);
   for (std::size_t i : inner_) slot_[i] = kNoSlot;
+  for (std::size_t i : order_) pieces_[i].through = false;
   moved_.clear();
   if constexpr (trace::traced<H>) {  // the status after e, lent as a list
     const ExactPoint at = reduced(e.p ? to_exact(*e.p) : to_exact(e.m));
@@ -397,7 +397,6 @@ std::vector<IntersectionPoint> Sweep::run(H& tr) {
     } else {
       e = heap_.front();
     }
-    ++event_;
     while (!heap_.empty() && compare_events(heap_.front(), e) == ZERO) {  // every copy of e
       taken_[heap_.front().id] = 1;
       std::pop_heap(heap_.begin(), heap_.end(), Later{this});
