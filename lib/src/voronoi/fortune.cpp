@@ -9,6 +9,7 @@
 #include <string>
 
 #include "fortune_beach.hpp"
+#include "fortune_exact.hpp"
 #include "fortune_interval.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/incircle.hpp"
@@ -38,12 +39,29 @@ Sign root_sign(const Rational& a, const Rational& b, const Rational& c) {
 }
 //< fortune-root-sign
 
-/// A site as rationals, with its index in the input.
+/// A site: x/w and y/w as doubles (exact when `exact`: w = 1), its point and its index in the
+/// input. The rationals x/w, y/w are made only by the exact stages (`qx`, `qy`).
 struct Site {
-  Rational x, y;
+  double x, y;
+  Interval xi, yi;  // enclosures of x/w and y/w (fortune_interval.hpp)
+  Point p;
   Index id;
-  Interval xi, yi;  // enclosures of x and y (fortune_interval.hpp)
+  bool exact;
 };
+
+/// x/w and y/w of a site as rationals.
+Rational qx(const Site& s) { return s.exact ? Rational(s.x) : Rational(s.p.x()) / Rational(s.p.w()); }
+Rational qy(const Site& s) { return s.exact ? Rational(s.y) : Rational(s.p.y()) / Rational(s.p.w()); }
+
+/// sign(y_a − y_b), then sign(x_a − x_b) when `by_x` and the ordinates are equal: exact.
+int compare_sites(const Site& a, const Site& b, bool by_x) {
+  if (a.exact && b.exact) {
+    if (a.y != b.y) return a.y < b.y ? -1 : 1;
+    return !by_x || a.x == b.x ? 0 : a.x < b.x ? -1 : 1;
+  }
+  if (const int c = sgn(qy(a) - qy(b)); c != 0 || !by_x) return c;
+  return sgn(qx(a) - qx(b));
+}
 
 //> fortune-breakpoint
 /// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right)
@@ -59,11 +77,12 @@ Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
       if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
     }
   }
-  const Rational &L = s.y, &a = s.x;
-  const Rational dp = p.y - L, dq = q.y - L;
-  if (dp == dq) return sign_of(Rational(p.x + q.x) / 2 - a);
-  const Rational dx = p.x - q.x, dy = p.y - q.y;
-  const Rational A = dq * p.x - dp * q.x - a * (dq - dp);
+  if (p.exact && q.exact && s.exact) return detail::breakpoint_sign(p.x, p.y, q.x, q.y, s.x, s.y);
+  const Rational L = qy(s), a = qx(s), px = qx(p), py = qy(p), qx_ = qx(q), qy_ = qy(q);
+  const Rational dp = py - L, dq = qy_ - L;
+  if (dp == dq) return sign_of(Rational(px + qx_) / 2 - a);
+  const Rational dx = px - qx_, dy = py - qy_;
+  const Rational A = dq * px - dp * qx_ - a * (dq - dp);
   const Rational C = dp * dq * (dx * dx + dy * dy);
   return sign_of(dq - dp) * root_sign(A, Rational(-1), C);
 }
@@ -87,10 +106,11 @@ struct Event {
 const Event::Circle& exact(const Event& e) {
   if (e.known) return *e.known;
   const Site &a = *e.a, &b = *e.b, &c = *e.c;
-  const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const Rational ax = qx(a), ay = qy(a);
+  const Rational bx = qx(b) - ax, by = qy(b) - ay, cx = qx(c) - ax, cy = qy(c) - ay;
   const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
   const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
-  e.known = std::make_unique<Event::Circle>(Event::Circle{a.x + ux, a.y + uy, ux * ux + uy * uy});
+  e.known = std::make_unique<Event::Circle>(Event::Circle{ax + ux, ay + uy, ux * ux + uy * uy});
   return *e.known;
 }
 
@@ -100,23 +120,58 @@ Interval event_y(const Site& a, const Site& b, const Site& c) {
   const Interval D = bx * cy - by * cx, B = bx * bx + by * by, C = cx * cx + cy * cy;
   const Interval h = recip(D + D);
   const Interval ux = (cy * B - by * C) * h, uy = (bx * C - cx * B) * h;
-  return a.yi + uy + sqrt(ux * ux + uy * uy);
+  return (a.yi + uy + sqrt(ux * ux + uy * uy)).settled();
+}
+
+/// True when the sites of f lie on the circle of e (exact: the filtered in_circle).
+bool same_circle(const Event& e, const Event& f) {
+  for (const Site* x : {f.a, f.b, f.c})
+    if (x != e.a && x != e.b && x != e.c && in_circle(e.a->p, e.b->p, e.c->p, x->p) != ZERO) return false;
+  return true;
+}
+
+/// When the sites of f are those of e moved by (t, 0) (lattices: rows of equal circles), the
+/// events have one y and sign(e − f) = sign(−t): that sign; else 2 (not decided). Exact: the
+/// ordinates are equal and the three differences of abscissae are exact and equal.
+int translated(const Event& e, const Event& f) {
+  const Site* E[3] = {e.a, e.b, e.c};
+  const Site* F[3] = {f.a, f.b, f.c};
+  for (const Site* s : {e.a, e.b, e.c, f.a, f.b, f.c})
+    if (!s->exact) return 2;
+  for (int r = 0; r < 3; ++r) {  // the three rotations of f's counter-clockwise triple
+    double t[3];
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k) {
+      const Site &x = *E[k], &y = *F[(k + r) % 3];
+      ok = x.y == y.y && detail::exact_difference(y.x, x.x, t[k]) && t[k] == t[0];
+    }
+    if (ok) return t[0] > 0 ? -1 : t[0] < 0 ? 1 : 0;
+  }
+  return 2;
 }
 
 //> fortune-event-order
 /// The order of events: sign(e − site) by y then x, a circle event first at one point.
 Sign event_vs_site(const Event& ev, const Site& s) {
-  if (const int f = (ev.yi - s.yi).sign(); f != 2) return static_cast<Sign>(f);
+  if (ev.yi.lo > s.yi.hi) return POSITIVE;
+  if (ev.yi.hi < s.yi.lo) return NEGATIVE;
+  const Site &a = *ev.a, &b = *ev.b, &c = *ev.c;
+  if (a.exact && b.exact && c.exact && s.exact) return detail::circle_top_vs_site(a.x, a.y, b.x, b.y, c.x, c.y, s.x, s.y);
   const Event::Circle& e = exact(ev);
-  const Sign y = root_sign(e.cy - s.y, Rational(1), e.R);
+  const Sign y = root_sign(e.cy - qy(s), Rational(1), e.R);
   if (y != ZERO) return y;
-  const Sign x = sign_of(e.cx - s.x);
+  const Sign x = sign_of(e.cx - qx(s));
   return x != ZERO ? x : NEGATIVE;
 }
 
 /// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
+/// Events of one circle (cocircular sites: a vertex where four or more cells meet) are equal,
+/// found by the filtered in_circle before any rational is made.
 Sign event_vs_event(const Event& ev, const Event& fv) {
-  if (const int s = (ev.yi - fv.yi).sign(); s != 2) return static_cast<Sign>(s);
+  if (ev.yi.lo > fv.yi.hi) return POSITIVE;
+  if (ev.yi.hi < fv.yi.lo) return NEGATIVE;
+  if (const int t = translated(ev, fv); t != 2) return static_cast<Sign>(t);
+  if (same_circle(ev, fv)) return ZERO;
   const Event::Circle &e = exact(ev), &f = exact(fv);
   const Rational d = e.cy - f.cy;
   const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
@@ -153,7 +208,7 @@ class Sweep {
     beach_.start(beach_.make(0));
     Arc* last = head_ = beach_.root;  // the leftmost arc: never removed (no left neighbour)
     report(trace::Event::site, {s_[0].id});
-    for (; i < s_.size() && s_[i].y == s_[0].y; ++i) {  // the first row: vertical rays
+    for (; i < s_.size() && compare_sites(s_[i], s_[0], false) == 0; ++i) {  // the first row: vertical rays
       Arc* n = beach_.make(int(i));
       beach_.insert_after(last, n);
       n->edge = new_edge(last->site, n->site), n->end = 1;
@@ -161,8 +216,8 @@ class Sweep {
       report(trace::Event::site, {s_[i].id});
     }
     while (i < s_.size() || !queue_.empty()) {
-      if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top()], s_[i]) < 0)) {
-        const int e = queue_.top();
+      if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top().id], s_[i]) < 0)) {
+        const int e = queue_.top().id;
         queue_.pop();
         if (ev_[e].valid) remove(e);
       } else {
@@ -253,14 +308,22 @@ class Sweep {
     if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
     ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
     m->event = int(ev_.size()) - 1;
-    queue_.push(m->event);
+    queue_.push({ev_.back().yi.lo, ev_.back().yi.hi, m->event});
     report(trace::Event::schedule, {a.id, b.id, c.id});
   }
+  /// An event in the queue: the enclosure of its y beside its number, so that most
+  /// comparisons read neither the event nor its sites.
+  struct Queued {
+    double lo, hi;
+    int id;
+  };
   struct Later {
-    const std::deque<Event>* ev;
-    bool operator()(int a, int b) const {
-      const Sign s = event_vs_event((*ev)[a], (*ev)[b]);
-      return s != ZERO ? s > 0 : a > b;
+    const std::vector<Event>* ev;
+    bool operator()(const Queued& a, const Queued& b) const {
+      if (a.lo > b.hi) return true;
+      if (a.hi < b.lo) return false;
+      const Sign s = event_vs_event((*ev)[a.id], (*ev)[b.id]);
+      return s != ZERO ? s > 0 : a.id > b.id;
     }
   };
   const std::vector<Site>& s_;
@@ -269,8 +332,8 @@ class Sweep {
   Arc* head_ = nullptr;
   std::vector<std::size_t> ids_;  // the beach line in input indices, when traced
   detail::BeachLine beach_;
-  std::deque<Event> ev_;
-  std::priority_queue<int, std::vector<int>, Later> queue_{Later{&ev_}};
+  std::vector<Event> ev_;
+  std::priority_queue<Queued, std::vector<Queued>, Later> queue_{Later{&ev_}};
 };
 
 /// The pole [0, ℓ_x, ℓ_y] of ℓ = p ∨ q: the point of Ω to the left of p → q.
@@ -300,15 +363,17 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
     if (!(p.w() > 0))
       throw Undefined("fortune: site " + std::to_string(i) + " " + to_string(p) +
                       " is not on the front side (Fortune's sweep works in the plane of the front side)");
-    s.push_back({Rational(p.x()) / Rational(p.w()), Rational(p.y()) / Rational(p.w()), Index(i), {}, {}});
+    const bool one = p.w() == 1;  // then x/w and y/w are the doubles x and y
+    const double x = one ? p.x() : p.x() / p.w(), y = one ? p.y() : p.y() / p.w();
+    s.push_back({x, y, one ? Interval{x, x} : Interval::around(x).settled(), one ? Interval{y, y} : Interval::around(y).settled(), p,
+                 Index(i), one});
   }
-  std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return compare_sites(a, b, true) < 0; });
   std::vector<Site> u;  // distinct sites, the first of each group kept
   u.reserve(s.size());
   for (Site& x : s) {
-    x.xi = Interval::of(x.x), x.yi = Interval::of(x.y);
-    if (!u.empty() && u.back().x == x.x && u.back().y == x.y) out.duplicates.push_back({x.id, u.back().id});
-    else u.push_back(std::move(x));
+    if (!u.empty() && compare_sites(u.back(), x, true) == 0) out.duplicates.push_back({x.id, u.back().id});
+    else u.push_back(x);
   }
   std::sort(out.duplicates.begin(), out.duplicates.end());
   out.first.push_back(0);
@@ -342,9 +407,9 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
     for (Index x : {V[v].a, V[v].b, V[v].c}) around[number[v]].push_back(x);
   }
   //> fortune-around
-  // The sites of each vertex, counter-clockwise around its centre (exact: rationals).
-  using Vec = std::pair<Rational, Rational>;
-  auto lower = [](const Vec& v) { return sgn(v.second) < 0 || (sgn(v.second) == 0 && sgn(v.first) < 0); };
+  // The sites of each vertex, counter-clockwise around its centre (exact).
+  std::vector<Index> rank(points.size());  // a site's place in the sweep order
+  for (std::size_t k = 0; k < u.size(); ++k) rank[u[k].id] = Index(k);
   for (std::size_t k = 0; k < around.size(); ++k) {
     auto& a = around[k];
     if (a.size() == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
@@ -352,21 +417,17 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
       out.first.push_back(Index(out.cells.size()));
       continue;
     }
+    // Four or more sites on one circle, whose centre is the vertex: counter-clockwise around
+    // the centre is counter-clockwise along the circle, the order of a convex polygon. From its
+    // lowest site o (the first in sweep order), every other site is in the half-plane above
+    // o's row or to its right on it, and no two are collinear with o (three points of a
+    // circle never are), so orient(o, p, q) > 0 orders them (exact, filtered; no centre made).
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
-    std::vector<std::pair<Vec, Index>> d;
-    const ExactPoint o = out.vertex(Index(k));
-    const Rational ox = Rational(o.x()) / Rational(o.w()), oy = Rational(o.y()) / Rational(o.w());
-    for (Index x : a) {
-      const Point& p = points[x];
-      d.push_back({{Rational(p.x()) / Rational(p.w()) - ox, Rational(p.y()) / Rational(p.w()) - oy}, x});
-    }
-    std::sort(d.begin(), d.end(), [&](const auto& p, const auto& q) {
-      const bool hp = lower(p.first), hq = lower(q.first);
-      if (hp != hq) return hq;
-      return sgn(p.first.first * q.first.second - p.first.second * q.first.first) > 0;
-    });
-    for (const auto& x : d) out.cells.push_back(x.second);
+    std::iter_swap(a.begin(), std::min_element(a.begin(), a.end(), [&](Index x, Index y) { return rank[x] < rank[y]; }));
+    const Point& o = points[a[0]];
+    std::sort(a.begin() + 1, a.end(), [&](Index p, Index q) { return orient(o, points[p], points[q]) == POSITIVE; });
+    out.cells.insert(out.cells.end(), a.begin(), a.end());
     out.first.push_back(Index(out.cells.size()));
   }
   //< fortune-around
