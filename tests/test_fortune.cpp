@@ -220,6 +220,28 @@ TEST(Fortune, LatticeManyCocircularQuadruples) {
   for (int side : {10, 30}) expect_front_half(testing::grid_sites(2000, side, 1, rng));  // every degeneracy at once
 }
 
+// The exact stages on doubles (fortune_exact.hpp) and the translation test of equal circles
+// meet lattices: a triangular lattice (rows of equal circles, triples turned), a square grid
+// turned by 45 degrees (circle tops on site rows: event and site at one point), one grid with
+// half its sites at weight 3 (doubles and rationals mixed in one sweep), with duplicates and a
+// collinear row; each about 3000 sites, against the dual.
+TEST(Fortune, LatticesOfThousandsOfSitesEqualTheDual) {
+  std::vector<Point> tri, turned, mixed;
+  for (int i = 0; i < 55; ++i)
+    for (int j = 0; j < 55; ++j) {
+      tri.push_back(Point(1, 2 * j + (i % 2), 3 * i));  // near-equilateral: rows of equal circles
+      turned.push_back(Point(1, i + j, i - j));
+      const double w = (i + j) % 2 ? 3 : 1;
+      mixed.push_back(Point(w, w * (i % 40), w * j));  // i and i - 40 coincide: duplicates
+    }
+  for (int k = 0; k < 50; ++k) mixed.push_back(Point(1, -5, k));  // a collinear column beside it
+  for (const auto& p : {tri, turned, mixed}) {
+    expect_front_half(p);
+    const FortuneDiagram fd = fortune(p);
+    for (Index v = 0; v < fd.size(); ++v) ASSERT_GE(fd.vertex_sites(v).size(), 3u);
+  }
+}
+
 TEST(Fortune, SitesOnOneCircle) {
   std::vector<Point> p;  // Pythagorean points of the circle of radius 25
   for (auto [x, y] : std::vector<std::pair<int, int>>{{25, 0}, {24, 7}, {20, 15}, {15, 20}, {7, 24}, {0, 25}, {-7, 24}, {-15, 20}, {-20, 15}, {-24, 7}, {-25, 0}, {-24, -7}, {-20, -15}, {-15, -20}, {-7, -24}, {0, -25}, {7, -24}, {15, -20}, {20, -15}, {24, -7}})
