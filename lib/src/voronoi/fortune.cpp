@@ -3,6 +3,7 @@
 #include "t2/voronoi/fortune.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <queue>
@@ -130,23 +131,27 @@ bool same_circle(const Event& e, const Event& f) {
   return true;
 }
 
-/// When the sites of f are those of e moved by (t, 0) (lattices: rows of equal circles), the
-/// events have one y and sign(e − f) = sign(−t): that sign; else 2 (not decided). Exact: the
-/// ordinates are equal and the three differences of abscissae are exact and equal.
+/// When the circle of f is the circle of e moved by (t, 0) (lattices: rows of equal circles),
+/// the events have one y and sign(e − f) = sign(−t): that sign; else 2 (not decided). Exact: t
+/// is an exact difference of abscissae of a site of f and a site of e on one row, and the other
+/// sites of f, moved back by t (exact differences), are on the circle of e (the filtered
+/// in_circle). A circle is the one through three of its points, so the circles are translates.
 int translated(const Event& e, const Event& f) {
-  const Site* E[3] = {e.a, e.b, e.c};
-  const Site* F[3] = {f.a, f.b, f.c};
   for (const Site* s : {e.a, e.b, e.c, f.a, f.b, f.c})
     if (!s->exact) return 2;
-  for (int r = 0; r < 3; ++r) {  // the three rotations of f's counter-clockwise triple
-    double t[3];
-    bool ok = true;
-    for (int k = 0; k < 3 && ok; ++k) {
-      const Site &x = *E[k], &y = *F[(k + r) % 3];
-      ok = x.y == y.y && detail::exact_difference(y.x, x.x, t[k]) && t[k] == t[0];
+  const Site* F[3] = {f.a, f.b, f.c};
+  for (const Site* x : {e.a, e.b, e.c})
+    for (int j = 0; j < 3; ++j) {
+      double t;
+      if (x->y != F[j]->y || !detail::exact_difference(F[j]->x, x->x, t)) continue;
+      bool on = true;
+      for (int k = 0; k < 3 && on; ++k) {
+        double b;
+        on = k == j || (detail::exact_difference(F[k]->x, t, b) &&
+                        in_circle(e.a->p, e.b->p, e.c->p, Point(1, b, F[k]->y)) == ZERO);
+      }
+      if (on) return t > 0 ? -1 : t < 0 ? 1 : 0;
     }
-    if (ok) return t[0] > 0 ? -1 : t[0] < 0 ? 1 : 0;
-  }
   return 2;
 }
 
@@ -249,8 +254,28 @@ class Sweep {
     if constexpr (trace::traced<H>) report(trace::Event::breakpoint, {s_[l->site].id, s_[r->site].id, s.id}, g);
     return g;
   }
+  /// The breakpoint of the arcs of l and r on the sweep line y = L, in rounded doubles (a guess:
+  /// the formula of breakpoint_side, or NaN).
+  double guess(const Arc* l, const Arc* r, double L) const {
+    const Site &p = s_[l->site], &q = s_[r->site];
+    if (p.y == q.y) return 0.5 * (p.x + q.x);
+    const double dp = p.y - L, dq = q.y - L, dx = p.x - q.x, dy = p.y - q.y;
+    return (dq * p.x - dp * q.x - std::sqrt(dp * dq * (dx * dx + dy * dy))) / (dq - dp);
+  }
   /// The arc above the abscissa of site s (the right one on a breakpoint).
+  /// Untraced, a search in rounded doubles guesses the arc, and two exact comparisons (its two
+  /// breakpoints) certify it: the arc with s.x in (left breakpoint, right breakpoint] is unique,
+  /// so a certified guess is the answer; a wrong guess (ties, rounding) goes the exact way.
   Arc* locate(const Site& s) {
+    if constexpr (!trace::traced<H>) {
+      Arc* n = beach_.root;
+      for (;;) {
+        if (n->prev && s.x < guess(n->prev, n, s.y)) n = n->left;
+        else if (n->next && !(s.x < guess(n, n->next, s.y))) n = n->right;
+        else break;
+      }
+      if ((!n->prev || side(n->prev, n, s) <= 0) && (!n->next || side(n, n->next, s) > 0)) return n;
+    }
     Arc* n = beach_.root;
     for (;;) {
       if (n->prev && side(n->prev, n, s) > 0) n = n->left;
