@@ -55,13 +55,20 @@ Rational qx(const Site& s) { return s.exact ? Rational(s.x) : Rational(s.p.x()) 
 Rational qy(const Site& s) { return s.exact ? Rational(s.y) : Rational(s.p.y()) / Rational(s.p.w()); }
 
 /// sign(y_a − y_b), then sign(x_a − x_b) when `by_x` and the ordinates are equal: exact.
+/// (Else the enclosures, then sign(y_a w_b − y_b w_a) of the homogeneous coordinates, w > 0.)
 int compare_sites(const Site& a, const Site& b, bool by_x) {
   if (a.exact && b.exact) {
     if (a.y != b.y) return a.y < b.y ? -1 : 1;
     return !by_x || a.x == b.x ? 0 : a.x < b.x ? -1 : 1;
   }
-  if (const int c = sgn(qy(a) - qy(b)); c != 0 || !by_x) return c;
-  return sgn(qx(a) - qx(b));
+  if (a.yi.hi < b.yi.lo) return -1;
+  if (a.yi.lo > b.yi.hi) return 1;
+  if (const int c = sign_of_poly([](const auto& p, const auto& q) { return p.y * q.w - q.y * p.w; }, a.p, b.p);
+      c != 0 || !by_x)
+    return c;
+  if (a.xi.hi < b.xi.lo) return -1;
+  if (a.xi.lo > b.xi.hi) return 1;
+  return sign_of_poly([](const auto& p, const auto& q) { return p.x * q.w - q.x * p.w; }, a.p, b.p);
 }
 
 //> fortune-breakpoint
@@ -97,6 +104,7 @@ struct Event {
   Interval yi;
   Arc* arc;     // the arc it removes
   bool valid;   // false once the arc or its neighbours changed
+  mutable int circle;  // union-find: an event known to be on the same circle (itself at first)
   struct Circle {
     Rational cx, cy, R;
   };
@@ -125,6 +133,12 @@ Interval event_y(const Site& a, const Site& b, const Site& c) {
 }
 
 /// True when the sites of f lie on the circle of e (exact: the filtered in_circle).
+/// The representative of event i's class of events on one circle (path halving).
+int circle_of(const std::vector<Event>& evs, int i) {
+  while (evs[i].circle != i) i = evs[i].circle = evs[evs[i].circle].circle;
+  return i;
+}
+
 bool same_circle(const Event& e, const Event& f) {
   for (const Site* x : {f.a, f.b, f.c})
     if (x != e.a && x != e.b && x != e.c && in_circle(e.a->p, e.b->p, e.c->p, x->p) != ZERO) return false;
@@ -172,11 +186,19 @@ Sign event_vs_site(const Event& ev, const Site& s) {
 /// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
 /// Events of one circle (cocircular sites: a vertex where four or more cells meet) are equal,
 /// found by the filtered in_circle before any rational is made.
-Sign event_vs_event(const Event& ev, const Event& fv) {
+/// The events found on one circle are kept in classes (union-find on `Event::circle`), so that
+/// n events of one circle cost O(n) in_circle tests, not one per comparison.
+Sign event_vs_event(const std::vector<Event>& evs, int i, int j) {
+  const Event &ev = evs[i], &fv = evs[j];
   if (ev.yi.lo > fv.yi.hi) return POSITIVE;
   if (ev.yi.hi < fv.yi.lo) return NEGATIVE;
   if (const int t = translated(ev, fv); t != 2) return static_cast<Sign>(t);
-  if (same_circle(ev, fv)) return ZERO;
+  const int ci = circle_of(evs, i), cj = circle_of(evs, j);
+  if (ci == cj) return ZERO;
+  if (same_circle(ev, fv)) {
+    evs[ci].circle = cj;
+    return ZERO;
+  }
   const Event::Circle &e = exact(ev), &f = exact(fv);
   const Rational d = e.cy - f.cy;
   const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
@@ -197,6 +219,7 @@ struct SweepEdge {
 /// A vertex of the sweep: its centre and its three sites (counter-clockwise).
 struct SweepVertex {
   Index a, b, c;
+  int event;  // the circle event that made it
 };
 
 /// The sweep's state; `hook` hears its events (trace/hook.hpp: site, circle, schedule,
@@ -234,6 +257,10 @@ class Sweep {
 
   std::vector<SweepEdge> edges;
   std::vector<SweepVertex> vertices;
+  /// True when the sweep found vertices v and w on one circle (then they are one point).
+  bool known_cocircular(int v, int w) const {
+    return circle_of(ev_, vertices[v].event) == circle_of(ev_, vertices[w].event);
+  }
 
  private:
   int new_edge(int p, int q) {
@@ -310,7 +337,7 @@ class Sweep {
     Arc* l = m->prev;
     Arc* r = m->next;
     const int v = int(vertices.size());
-    vertices.push_back({ s_[l->site].id, s_[m->site].id, s_[r->site].id});
+    vertices.push_back({s_[l->site].id, s_[m->site].id, s_[r->site].id, e});
     edges[m->edge].end[m->end] = v;
     edges[r->edge].end[r->end] = v;
     const int g = new_edge(l->site, r->site);
@@ -331,7 +358,7 @@ class Sweep {
     if (!l || !r || l->site == r->site) return;
     const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
     if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
-    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
+    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true, int(ev_.size())});
     m->event = int(ev_.size()) - 1;
     queue_.push({ev_.back().yi.lo, ev_.back().yi.hi, m->event});
     report(trace::Event::schedule, {a.id, b.id, c.id});
@@ -347,7 +374,7 @@ class Sweep {
     bool operator()(const Queued& a, const Queued& b) const {
       if (a.lo > b.hi) return true;
       if (a.hi < b.lo) return false;
-      const Sign s = event_vs_event((*ev)[a.id], (*ev)[b.id]);
+      const Sign s = event_vs_event(*ev, a.id, b.id);
       return s != ZERO ? s > 0 : a.id > b.id;
     }
   };
@@ -417,7 +444,7 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
   std::iota(up.begin(), up.end(), 0);
   for (const SweepEdge& e : sweep.edges)
     if (e.end[0] >= 0 && e.end[1] >= 0 &&
-        in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO)
+        (sweep.known_cocircular(e.end[0], e.end[1]) || in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO))
       up[find(up, e.end[0])] = find(up, e.end[1]);
   std::vector<int> number(V.size(), -1);
   std::vector<std::vector<Index>> around;
@@ -464,9 +491,15 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
       out.lines.push_back({e.s, e.t});
     } else {
       const int v = std::max(a, b);
-      Index w = e.s;  // a third site of the vertex: the ray leaves it behind
+      // A third site of the vertex: the ray leaves it behind (s t is a hull edge, so every
+      // other site of the vertex is on one side of it; the first found, not a scan of them all:
+      // n cocircular sites have n rays at one vertex).
+      Index w = e.s;
       for (Index x : out.vertex_sites(Index(v)))
-        if (x != e.s && x != e.t) w = x;
+        if (x != e.s && x != e.t) {
+          w = x;
+          break;
+        }
       const bool left = orient(points[e.s], points[e.t], points[w]) == POSITIVE;
       out.rays.push_back({Index(v), left ? left_pole(points[e.t], points[e.s]) : left_pole(points[e.s], points[e.t]), e.s, e.t});
     }
