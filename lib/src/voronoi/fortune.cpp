@@ -109,7 +109,22 @@ struct Event {
     Rational cx, cy, R;
   };
   mutable std::unique_ptr<Circle> known{};  // the rationals, once computed
+  mutable bool tightened = false;            // `tight` computed
+  mutable Interval tight{};                  // yi, narrowed by tight_event_y (fortune_exact.hpp)
 };
+
+/// The event's y enclosed tightly (tight_event_y, for sites with w = 1), once, when the
+/// enclosure `yi` did not decide: the intersection of the two enclosures.
+const Interval& tight(const Event& e) {
+  if (!e.tightened) {
+    e.tightened = true, e.tight = e.yi;
+    if (e.a->exact && e.b->exact && e.c->exact) {
+      const Interval t = detail::tight_event_y(e.a->x, e.a->y, e.b->x, e.b->y, e.c->x, e.c->y);
+      e.tight = {std::max(t.lo, e.yi.lo), std::min(t.hi, e.yi.hi)};
+    }
+  }
+  return e.tight;
+}
 
 /// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
 const Event::Circle& exact(const Event& e) {
@@ -146,10 +161,12 @@ bool same_circle(const Event& e, const Event& f) {
 }
 
 /// When the circle of f is the circle of e moved by (t, 0) (lattices: rows of equal circles),
-/// the events have one y and sign(e − f) = sign(−t): that sign; else 2 (not decided). Exact: t
-/// is an exact difference of abscissae of a site of f and a site of e on one row, and the other
-/// sites of f, moved back by t (exact differences), are on the circle of e (the filtered
-/// in_circle). A circle is the one through three of its points, so the circles are translates.
+/// the events have one y and sign(e − f) = sign(−t); when it is the mirror image of e's circle
+/// in a vertical line x = S/2 (inputs symmetric left to right), one y and sign(e − f) =
+/// sign(2cₓ − S) (centre_x_vs): that sign; else 2 (not decided). Exact: t (or S) is an exact
+/// difference (sum) of abscissae of a site of f and a site of e on one row, and the other sites
+/// of f, moved back (reflected back: S − x), exact, are on the circle of e (the filtered
+/// in_circle). A circle is the one through three of its points, so the circles are images.
 int translated(const Event& e, const Event& f) {
   for (const Site* s : {e.a, e.b, e.c, f.a, f.b, f.c})
     if (!s->exact) return 2;
@@ -165,6 +182,15 @@ int translated(const Event& e, const Event& f) {
                         in_circle(e.a->p, e.b->p, e.c->p, Point(1, b, F[k]->y)) == ZERO);
       }
       if (on) return t > 0 ? -1 : t < 0 ? 1 : 0;
+      double S;
+      if (!detail::exact_difference(F[j]->x, -x->x, S)) continue;
+      on = true;
+      for (int k = 0; k < 3 && on; ++k) {
+        double b;
+        on = k == j || (detail::exact_difference(S, F[k]->x, b) &&
+                        in_circle(e.a->p, e.b->p, e.c->p, Point(1, b, F[k]->y)) == ZERO);
+      }
+      if (on) return detail::centre_x_vs(e.a->x, e.a->y, e.b->x, e.b->y, e.c->x, e.c->y, S);
     }
   return 2;
 }
@@ -174,6 +200,8 @@ int translated(const Event& e, const Event& f) {
 Sign event_vs_site(const Event& ev, const Site& s) {
   if (ev.yi.lo > s.yi.hi) return POSITIVE;
   if (ev.yi.hi < s.yi.lo) return NEGATIVE;
+  if (const Interval& te = tight(ev); te.lo > s.yi.hi) return POSITIVE;
+  else if (te.hi < s.yi.lo) return NEGATIVE;
   const Site &a = *ev.a, &b = *ev.b, &c = *ev.c;
   if (a.exact && b.exact && c.exact && s.exact) return detail::circle_top_vs_site(a.x, a.y, b.x, b.y, c.x, c.y, s.x, s.y);
   const Event::Circle& e = exact(ev);
@@ -193,6 +221,8 @@ Sign event_vs_event(const std::vector<Event>& evs, int i, int j) {
   if (ev.yi.lo > fv.yi.hi) return POSITIVE;
   if (ev.yi.hi < fv.yi.lo) return NEGATIVE;
   if (const int t = translated(ev, fv); t != 2) return static_cast<Sign>(t);
+  if (const Interval &te = tight(ev), &tf = tight(fv); te.lo > tf.hi) return POSITIVE;
+  else if (te.hi < tf.lo) return NEGATIVE;
   const int ci = circle_of(evs, i), cj = circle_of(evs, j);
   if (ci == cj) return ZERO;
   if (same_circle(ev, fv)) {

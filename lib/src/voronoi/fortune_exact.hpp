@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "fortune_interval.hpp"
+#include "t2/kernel/expansion.hpp"
 #include "t2/kernel/filter.hpp"
 #include "t2/kernel/sign.hpp"
 
@@ -79,6 +81,48 @@ inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, doubl
       },
       ax, ay, bx, by, cx, cy, sx, sy);
   return x != ZERO ? x : NEGATIVE;
+}
+
+/// sign(2cₓ − S), cₓ the abscissa of the centre of the circle through a, b, c (counter-
+/// clockwise): with D' = D/2 > 0 (notation of circle_top_vs_site), 2cₓ − S = 2aₓ − S + Nₓ/D'.
+inline Sign centre_x_vs(double ax, double ay, double bx, double by, double cx, double cy, double S) {
+  return sign_of_poly(
+      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto& S) {
+        const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+        return (ax + ax - S) * (ux * vy - uy * vx) + vy * (ux * ux + uy * uy) - uy * (vx * vx + vy * vy);
+      },
+      ax, ay, bx, by, cx, cy, S);
+}
+
+/// An enclosure of the sum of an expansion's components (each exact: a point interval).
+template <int N>
+Interval enclose(const expansion::Expansion<N>& e) {
+  Interval s{0, 0};
+  for (int i = 0; i < e.n; ++i) s = s + Interval{e.c[i], e.c[i]};
+  return s;
+}
+
+/// A tight enclosure of the y of the circle event of a, b, c (counter-clockwise; the formula of
+/// circle_top_vs_site: y = aᵧ + (Nᵧ + √Q)/D), or the whole line when a coordinate is outside
+/// [2⁻³⁰⁰, 2³⁰⁰] (then an expansion of degree 3 could underflow or overflow). D, Nₓ, Nᵧ are
+/// evaluated exactly as expansions (expansion.hpp) and enclosed by the interval sums of their
+/// components, so they carry no error from the cancellations of ill-conditioned circles (three
+/// nearly collinear sites), which make the interval formula of event_y wide; Nᵧ + √Q is read
+/// as Nₓ²/(√Q − Nᵧ) when Nᵧ < 0 (no cancellation). Every step is an Interval operation, so the
+/// result contains the exact y (fortune_interval.hpp).
+inline Interval tight_event_y(double ax, double ay, double bx, double by, double cx, double cy) {
+  for (double v : {ax, ay, bx, by, cx, cy})
+    if (!expansion::in_expansion_range<-300, 300>(v)) return {-HUGE_VAL, HUGE_VAL};
+  using expansion::diff;
+  const auto ux = diff(bx, ax), uy = diff(by, ay), vx = diff(cx, ax), vy = diff(cy, ay);
+  const auto d = ux * vy - uy * vx;
+  const auto B = ux * ux + uy * uy, C = vx * vx + vy * vy;
+  const Interval D = enclose(d + d), Nx = enclose(vy * B - uy * C), Ny = enclose(ux * C - vx * B);
+  const Interval r = sqrt(Nx * Nx + Ny * Ny);
+  Interval T;
+  if (Ny.hi < 0) T = Nx * Nx * recip(r - Ny);
+  else T = Ny + r;
+  return (Interval{ay, ay} + T * recip(D)).settled();
 }
 
 /// a − b as a double, and whether it is exact (Knuth's TwoSum: the rounding error, computed
