@@ -258,7 +258,7 @@ struct SweepVertex {
 template <class H>
 class Sweep {
  public:
-  Sweep(const std::vector<Site>& sites, std::span<const Point> points, H& hook) : s_(sites), p_(points), hook_(hook) {}
+  Sweep(const std::vector<Site>& sites, H& hook) : s_(sites), hook_(hook) { ev_.reserve(2 * sites.size()); }
 
   //> fortune-sweep
   void run() {
@@ -287,6 +287,11 @@ class Sweep {
 
   std::vector<SweepEdge> edges;
   std::vector<SweepVertex> vertices;
+  /// True when the events of vertices v and w have disjoint enclosures of y (two circles).
+  bool apart(int v, int w) const {
+    const Interval &a = ev_[vertices[v].event].yi, &b = ev_[vertices[w].event].yi;
+    return a.hi < b.lo || b.hi < a.lo;
+  }
   /// True when the sweep found vertices v and w on one circle (then they are one point).
   bool known_cocircular(int v, int w) const {
     return circle_of(ev_, vertices[v].event) == circle_of(ev_, vertices[w].event);
@@ -387,7 +392,7 @@ class Sweep {
     Arc* r = m->next;
     if (!l || !r || l->site == r->site) return;
     const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
-    if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
+    if (orient(a.p, b.p, c.p) != POSITIVE) return;
     ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true, int(ev_.size())});
     m->event = int(ev_.size()) - 1;
     queue_.push({ev_.back().yi.lo, ev_.back().yi.hi, m->event});
@@ -409,7 +414,6 @@ class Sweep {
     }
   };
   const std::vector<Site>& s_;
-  std::span<const Point> p_;
   H& hook_;
   Arc* head_ = nullptr;
   std::vector<std::size_t> ids_;  // the beach line in input indices, when traced
@@ -450,17 +454,36 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
     s.push_back({x, y, one ? Interval{x, x} : Interval::around(x).settled(), one ? Interval{y, y} : Interval::around(y).settled(), p,
                  Index(i), one});
   }
-  std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return compare_sites(a, b, true) < 0; });
+  // The sweep order (y, then x, then the input order): on keys of 24 bytes when every site has
+  // w = 1, else on the sites by compare_sites.
+  std::vector<Index> order(s.size());
+  if (std::all_of(s.begin(), s.end(), [](const Site& x) { return x.exact; })) {
+    struct Key {
+      double y, x;
+      Index i;
+    };
+    std::vector<Key> k(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) k[i] = {s[i].y, s[i].x, Index(i)};
+    std::sort(k.begin(), k.end(), [](const Key& a, const Key& b) {
+      return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : a.i < b.i;
+    });
+    for (std::size_t i = 0; i < s.size(); ++i) order[i] = k[i].i;
+  } else {
+    std::iota(order.begin(), order.end(), Index(0));
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return compare_sites(s[a], s[b], true) < 0; });
+  }
   std::vector<Site> u;  // distinct sites, the first of each group kept
   u.reserve(s.size());
-  for (Site& x : s) {
+  for (Index i : order) {
+    const Site& x = s[i];
     if (!u.empty() && compare_sites(u.back(), x, true) == 0) out.duplicates.push_back({x.id, u.back().id});
     else u.push_back(x);
   }
+  std::vector<Site>().swap(s);
   std::sort(out.duplicates.begin(), out.duplicates.end());
   out.first.push_back(0);
   if (u.size() < 2) return out;
-  Sweep<H> sweep(u, points, hook);
+  Sweep<H> sweep(u, hook);
   sweep.run();
   // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
   // Both ends of an edge between s and t are circles through s and t (the edge's breakpoint
@@ -472,33 +495,42 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
   };
   std::vector<int> up(V.size());
   std::iota(up.begin(), up.end(), 0);
+  // Two circles through s and t with one centre are one circle, with one event: ends whose
+  // events' enclosures are apart are two points, without in_circle.
   for (const SweepEdge& e : sweep.edges)
-    if (e.end[0] >= 0 && e.end[1] >= 0 &&
-        (sweep.known_cocircular(e.end[0], e.end[1]) || in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO))
+    if (e.end[0] >= 0 && e.end[1] >= 0 && !sweep.apart(e.end[0], e.end[1]) &&
+        (sweep.known_cocircular(e.end[0], e.end[1]) ||
+         in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO))
       up[find(up, e.end[0])] = find(up, e.end[1]);
   std::vector<int> number(V.size(), -1);
-  std::vector<std::vector<Index>> around;
+  std::vector<Index> start{0};  // the sites of the sweep vertices of vertex k: around[start[k] ..)
   for (std::size_t v = 0; v < V.size(); ++v) {
     const int r = find(up, int(v));
     if (number[r] < 0) {
       number[r] = int(out.circles.size());
       out.circles.push_back({V[r].a, V[r].b, V[r].c});
-      around.emplace_back();
+      start.push_back(0);
     }
     number[v] = number[r];
-    for (Index x : {V[v].a, V[v].b, V[v].c}) around[number[v]].push_back(x);
+    start[number[v] + 1] += 3;
   }
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<Index> around(start.back()), fill(start.begin(), start.end() - 1);
+  for (std::size_t v = 0; v < V.size(); ++v)
+    for (Index x : {V[v].a, V[v].b, V[v].c}) around[fill[number[v]]++] = x;
   //> fortune-around
   // The sites of each vertex, counter-clockwise around its centre (exact).
   std::vector<Index> rank(points.size());  // a site's place in the sweep order
   for (std::size_t k = 0; k < u.size(); ++k) rank[u[k].id] = Index(k);
-  for (std::size_t k = 0; k < around.size(); ++k) {
-    auto& a = around[k];
-    if (a.size() == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
-      out.cells.insert(out.cells.end(), a.begin(), a.end());
+  out.cells.reserve(around.size());
+  std::vector<Index> a;
+  for (std::size_t k = 0; k + 1 < start.size(); ++k) {
+    if (start[k + 1] - start[k] == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
+      out.cells.insert(out.cells.end(), around.begin() + start[k], around.begin() + start[k + 1]);
       out.first.push_back(Index(out.cells.size()));
       continue;
     }
+    a.assign(around.begin() + start[k], around.begin() + start[k + 1]);
     // Four or more sites on one circle, whose centre is the vertex: counter-clockwise around
     // the centre is counter-clockwise along the circle, the order of a convex polygon. From its
     // lowest site o (the first in sweep order), every other site is in the half-plane above
