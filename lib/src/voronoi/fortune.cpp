@@ -45,8 +45,10 @@ Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
       if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
     }
   }
-  if (p.exact && q.exact && s.exact) return detail::breakpoint_sign(p.x, p.y, q.x, q.y, s.x, s.y);
-  const Rational L = qy(s), a = qx(s), px = qx(p), py = qy(p), qx_ = qx(q), qy_ = qy(q);
+  if (p.exact && q.exact && s.exact)  // w = 1: the same signs on the doubles, exact
+    return detail::breakpoint_sign(p.x, p.y, q.x, q.y, s.x, s.y);
+  const Rational L = qy(s), a = qx(s), px = qx(p), py = qy(p);
+  const Rational qx_ = qx(q), qy_ = qy(q);
   const Rational dp = py - L, dq = qy_ - L;
   if (dp == dq) return sign_of(Rational(px + qx_) / 2 - a);
   const Rational dx = px - qx_, dy = py - qy_;
