@@ -77,7 +77,7 @@ struct SweepVertex {
 template <class H>
 class Sweep {
  public:
-  Sweep(const std::vector<Site>& sites, H& hook) : s_(sites), hook_(hook) { ev_.reserve(2 * sites.size()); }
+  Sweep(const std::vector<Site>& sites, H& hook) : s_(sites), hook_(hook) { ev_.reserve(3 * sites.size()); }
 
   //> fortune-sweep
   void run() {
@@ -214,7 +214,7 @@ class Sweep {
     if (!l || !r || l->site == r->site) return;
     const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
     if (orient(a.p, b.p, c.p) != POSITIVE) return;
-    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true, int(ev_.size())});
+    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true, false, int(ev_.size())});
     m->event = int(ev_.size()) - 1;
     queue_.push({ev_.back().yi.lo, ev_.back().yi.hi, m->event});
     report(trace::Event::schedule, {a.id, b.id, c.id});

@@ -70,29 +70,28 @@ inline int compare_sites(const Site& a, const Site& b, bool by_x) {
 /// (`exact`); the enclosure `yi` of cy + √R, from the sites' enclosures, decides most orders.
 struct Event {
   const Site *a, *b, *c;
-  Interval yi;
+  mutable Interval yi;  // narrowed once by `tight`
   Arc* arc;     // the arc it removes
   bool valid;   // false once the arc or its neighbours changed
+  mutable bool tightened;  // `tight` ran
   mutable int circle;  // union-find: an event known to be on the same circle (itself at first)
   struct Circle {
     Rational cx, cy, R;
   };
   mutable std::unique_ptr<Circle> known{};  // the rationals, once computed
-  mutable bool tightened = false;            // `tight` computed
-  mutable Interval tight{};                  // yi, narrowed by tight_event_y (fortune_exact.hpp)
 };
 
-/// The event's y enclosed tightly (tight_event_y, for sites with w = 1), once, when the
-/// enclosure `yi` did not decide: the intersection of the two enclosures.
+/// The event's y enclosed tightly, once, when the enclosure `yi` did not decide: `yi` becomes
+/// its intersection with tight_event_y's (fortune_exact.hpp; sites with w = 1), both enclosures.
 inline const Interval& tight(const Event& e) {
   if (!e.tightened) {
-    e.tightened = true, e.tight = e.yi;
+    e.tightened = true;
     if (e.a->exact && e.b->exact && e.c->exact) {
       const Interval t = detail::tight_event_y(e.a->x, e.a->y, e.b->x, e.b->y, e.c->x, e.c->y);
-      e.tight = {std::max(t.lo, e.yi.lo), std::min(t.hi, e.yi.hi)};
+      e.yi = {std::max(t.lo, e.yi.lo), std::min(t.hi, e.yi.hi)};
     }
   }
-  return e.tight;
+  return e.yi;
 }
 
 /// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
