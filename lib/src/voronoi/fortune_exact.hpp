@@ -52,7 +52,7 @@ inline Sign breakpoint_sign(double xp, double yp, double xq, double yq, double a
 /// the x order is sign((aₓ − sₓ)D + Nₓ).
 inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, double cx, double cy, double sx, double sy) {
   const Sign A = sign_of_poly(
-      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto& sx,
+      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto&,
          const auto& sy) {
         const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
         const auto D = (ux * vy - uy * vx) + (ux * vy - uy * vx);
@@ -61,7 +61,7 @@ inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, doubl
       ax, ay, bx, by, cx, cy, sx, sy);
   if (A != NEGATIVE) return POSITIVE;
   const Sign y = sign_of_poly(
-      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto& sx,
+      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto&,
          const auto& sy) {
         const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
         const auto B = ux * ux + uy * uy, C = vx * vx + vy * vy;
@@ -74,7 +74,7 @@ inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, doubl
   if (y != ZERO) return y;
   const Sign x = sign_of_poly(
       [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto& sx,
-         const auto& sy) {
+         const auto&) {
         const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
         const auto D = (ux * vy - uy * vx) + (ux * vy - uy * vx);
         return (ax - sx) * D + vy * (ux * ux + uy * uy) - uy * (vx * vx + vy * vy);
