@@ -13,6 +13,8 @@
 #include "fortune_interval.hpp"
 #include "t2/kernel/expansion.hpp"
 #include "t2/kernel/filter.hpp"
+#include "t2/kernel/incircle.hpp"
+#include "t2/kernel/point.hpp"
 #include "t2/kernel/sign.hpp"
 
 namespace t2::detail {
@@ -60,6 +62,21 @@ inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, doubl
       },
       ax, ay, bx, by, cx, cy, sx, sy);
   if (A != NEGATIVE) return POSITIVE;
+  // A < 0: s is above the centre. On the circle (in_circle = 0, degree 4: cheaper than the
+  // degree 6 below), s is the top, a tie resolved for the circle, exactly when it is on the
+  // centre's vertical (the x order is 0); else it is below the top.
+  const auto x_order = [&] {
+    return sign_of_poly(
+        [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy,
+           const auto& sx, const auto&) {
+          const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+          const auto D = (ux * vy - uy * vx) + (ux * vy - uy * vx);
+          return (ax - sx) * D + vy * (ux * ux + uy * uy) - uy * (vx * vx + vy * vy);
+        },
+        ax, ay, bx, by, cx, cy, sx, sy);
+  };
+  if (in_circle(Point(1, ax, ay), Point(1, bx, by), Point(1, cx, cy), Point(1, sx, sy)) == ZERO)
+    return x_order() == ZERO ? NEGATIVE : POSITIVE;
   const Sign y = sign_of_poly(
       [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto&,
          const auto& sy) {
@@ -72,14 +89,7 @@ inline Sign circle_top_vs_site(double ax, double ay, double bx, double by, doubl
       },
       ax, ay, bx, by, cx, cy, sx, sy);
   if (y != ZERO) return y;
-  const Sign x = sign_of_poly(
-      [](const auto& ax, const auto& ay, const auto& bx, const auto& by, const auto& cx, const auto& cy, const auto& sx,
-         const auto&) {
-        const auto ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
-        const auto D = (ux * vy - uy * vx) + (ux * vy - uy * vx);
-        return (ax - sx) * D + vy * (ux * ux + uy * uy) - uy * (vx * vx + vy * vy);
-      },
-      ax, ay, bx, by, cx, cy, sx, sy);
+  const Sign x = x_order();
   return x != ZERO ? x : NEGATIVE;
 }
 
