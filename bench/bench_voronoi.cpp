@@ -2,7 +2,8 @@
 // Voronoi sweep and CGAL's Delaunay dual, on the same points in one run: CPU times and ratios.
 //
 //   bench_voronoi --benchmark_filter=Dual     10⁵ and 10⁶ uniform points
-//   bench_voronoi --benchmark_filter=Fortune  t2::fortune against Boost.Polygon, 10⁵ and 10⁶
+//   bench_voronoi --benchmark_filter=Fortune  t2::fortune against Boost.Polygon, 10⁵ and 10⁶,
+//                                             uniform (circle:0) and a rounded circle (circle:1)
 //
 // The points: t2::gen's uniform points of [-1, 1)², scaled by 2³⁰ and rounded to integers,
 // because Boost.Polygon takes 32-bit integer coordinates; every library gets these integers
@@ -48,12 +49,22 @@ double cpu_now() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-/// Uniform points rounded to integers of at most 2³⁰ in absolute value.
-std::vector<std::pair<int, int>> integer_points(std::size_t n) {
+/// Uniform points rounded to integers of at most 2³⁰ in absolute value; with `circle`, n points
+/// of the circle of radius 2³⁰ by cos and sin, rounded (jc_voronoi's "pathological" circles:
+/// nearly cocircular, symmetric left to right).
+std::vector<std::pair<int, int>> integer_points(std::size_t n, bool circle = false) {
+  std::vector<std::pair<int, int>> out;
+  if (circle) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * double(k) / double(n);
+      out.emplace_back(static_cast<int>(std::lround(std::cos(t) * 1073741824.0)),
+                       static_cast<int>(std::lround(std::sin(t) * 1073741824.0)));
+    }
+    return out;
+  }
   t2::gen::Options o;
   o.n = n;
   o.seed = 42;
-  std::vector<std::pair<int, int>> out;
   for (const t2::Point& p : t2::gen::points(t2::gen::Kind::uniform, o))
     out.emplace_back(static_cast<int>(std::lround(p.x() / p.w() * 1073741824.0)),
                      static_cast<int>(std::lround(p.y() / p.w() * 1073741824.0)));
@@ -127,7 +138,7 @@ void Dual(benchmark::State& state) {
 BENCHMARK(Dual)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void Fortune(benchmark::State& state) {
-  const auto ip = integer_points(static_cast<std::size_t>(state.range(0)));
+  const auto ip = integer_points(static_cast<std::size_t>(state.range(0)), state.range(1) == 1);
   std::vector<t2::Point> pts;
   std::vector<boost::polygon::point_data<int>> bp;
   for (auto [x, y] : ip) {
@@ -150,6 +161,10 @@ void Fortune(benchmark::State& state) {
   state.counters["boost_s"] = tb / k;
   state.counters["fortune/boost"] = tf / tb;
 }
-BENCHMARK(Fortune)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(Fortune)
+    ->ArgsProduct({{100000, 1000000}, {0, 1}})
+    ->ArgNames({"n", "circle"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace

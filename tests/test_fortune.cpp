@@ -8,8 +8,10 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <cmath>
 #include <boost/polygon/voronoi.hpp>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 #include <string>
@@ -218,6 +220,42 @@ TEST(Fortune, LatticeManyCocircularQuadruples) {
   std::mt19937 rng(5);
   for (int k = 0; k < 5; ++k) expect_front_half(testing::grid_sites(150, 4, 1, rng));  // dense: many duplicates
   for (int side : {10, 30}) expect_front_half(testing::grid_sites(2000, side, 1, rng));  // every degeneracy at once
+}
+
+// The exact stages on doubles (fortune_exact.hpp) and the translation test of equal circles
+// meet lattices: a triangular lattice (rows of equal circles, triples turned), a square grid
+// turned by 45 degrees (circle tops on site rows: event and site at one point), one grid with
+// half its sites at weight 3 (doubles and rationals mixed in one sweep), with duplicates and a
+// collinear row; mirror-symmetric sets; each about 3000 sites, against the dual.
+TEST(Fortune, LatticesOfThousandsOfSitesEqualTheDual) {
+  std::vector<Point> tri, turned, mixed;
+  for (int i = 0; i < 55; ++i)
+    for (int j = 0; j < 55; ++j) {
+      tri.push_back(Point(1, 2 * j + (i % 2), 3 * i));  // near-equilateral: rows of equal circles
+      turned.push_back(Point(1, i + j, i - j));
+      const double w = (i + j) % 2 ? 3 : 1;
+      mixed.push_back(Point(w, w * (i % 40), w * j));  // i and i - 40 coincide: duplicates
+    }
+  for (int k = 0; k < 50; ++k) mixed.push_back(Point(1, -5, k));  // a collinear column beside it
+  // Symmetric left to right (mirror circles: one y, the x order by centre_x_vs): 3000 points of a
+  // circle rounded to integers (jc_voronoi's pathological circles, larger), and random pairs.
+  std::vector<Point> round, mirror;
+  for (int k = 0; k < 3000; ++k) {
+    const double t = 2 * std::numbers::pi * k / 3000;
+    round.push_back(Point(1, std::round(std::cos(t) * 1048576), std::round(std::sin(t) * 1048576)));
+  }
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> d(1, 60);
+  for (int k = 0; k < 1500; ++k) {
+    const int x = d(rng), y = d(rng);
+    mirror.push_back(Point(1, 7 + x, y));
+    mirror.push_back(Point(1, 7 - x, y));
+  }
+  for (const auto& p : {tri, turned, mixed, round, mirror}) {
+    expect_front_half(p);
+    const FortuneDiagram fd = fortune(p);
+    for (Index v = 0; v < fd.size(); ++v) ASSERT_GE(fd.vertex_sites(v).size(), 3u);
+  }
 }
 
 TEST(Fortune, SitesOnOneCircle) {

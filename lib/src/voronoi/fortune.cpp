@@ -1,14 +1,18 @@
-// Fortune's sweep (t2/voronoi/fortune.hpp): predicates on rationals, the sweep, and the
-// contraction of zero-length edges at cocircular sites.
+// Fortune's sweep (t2/voronoi/fortune.hpp): the breakpoint predicate, the sweep, and the
+// contraction of zero-length edges at cocircular sites (the events and their order:
+// fortune_events.hpp).
 #include "t2/voronoi/fortune.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <queue>
 #include <string>
 
 #include "fortune_beach.hpp"
+#include "fortune_events.hpp"
+#include "fortune_exact.hpp"
 #include "fortune_interval.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/incircle.hpp"
@@ -24,26 +28,8 @@ namespace {
 using Index = FortuneDiagram::Index;
 using detail::Arc;
 using detail::Interval;
+using namespace detail::fortune_sweep;
 
-//> fortune-root-sign
-/// sign(a + b√c) for rationals, c ≥ 0: times the positive a.den · b.den · c.den it is
-/// A + B√C with A = a.num·b.den·c.den, B = b.num·a.den, C = c.num·c.den (integers), whose sign
-/// sign_of_root_sum decides (k = 1 makes A² and B²C of one total degree).
-Sign root_sign(const Rational& a, const Rational& b, const Rational& c) {
-  const Integer A = a.get_num() * b.get_den() * c.get_den(), B = b.get_num() * a.get_den(),
-                C = c.get_num() * c.get_den(), k(1);
-  return sign_of_root_sum([](const auto& A, const auto&, const auto&, const auto& k) { return A * k; },
-                          [](const auto&, const auto& B, const auto&, const auto&) { return B; },
-                          [](const auto&, const auto&, const auto& C, const auto& k) { return C * k; }, A, B, C, k);
-}
-//< fortune-root-sign
-
-/// A site as rationals, with its index in the input.
-struct Site {
-  Rational x, y;
-  Index id;
-  Interval xi, yi;  // enclosures of x and y (fortune_interval.hpp)
-};
 
 //> fortune-breakpoint
 /// sign(β − a), β the abscissa of the breakpoint of the arcs of p (left) and q (right)
@@ -59,74 +45,19 @@ Sign breakpoint_side(const Site& p, const Site& q, const Site& s) {
       if (const int sr = r.sign(); sr != 2) return static_cast<Sign>(sd * sr);
     }
   }
-  const Rational &L = s.y, &a = s.x;
-  const Rational dp = p.y - L, dq = q.y - L;
-  if (dp == dq) return sign_of(Rational(p.x + q.x) / 2 - a);
-  const Rational dx = p.x - q.x, dy = p.y - q.y;
-  const Rational A = dq * p.x - dp * q.x - a * (dq - dp);
+  if (p.exact && q.exact && s.exact)  // w = 1: the same signs on the doubles, exact
+    return detail::breakpoint_sign(p.x, p.y, q.x, q.y, s.x, s.y);
+  const Rational L = qy(s), a = qx(s), px = qx(p), py = qy(p);
+  const Rational qx_ = qx(q), qy_ = qy(q);
+  const Rational dp = py - L, dq = qy_ - L;
+  if (dp == dq) return sign_of(Rational(px + qx_) / 2 - a);
+  const Rational dx = px - qx_, dy = py - qy_;
+  const Rational A = dq * px - dp * qx_ - a * (dq - dp);
   const Rational C = dp * dq * (dx * dx + dy * dy);
   return sign_of(dq - dp) * root_sign(A, Rational(-1), C);
 }
 //< fortune-breakpoint
 
-/// A circle event: the circle through the sites a, b, c with centre (cx, cy) and squared
-/// radius R, at y = cy + √R. The rationals are computed when a decision first needs them
-/// (`exact`); the enclosure `yi` of cy + √R, from the sites' enclosures, decides most orders.
-struct Event {
-  const Site *a, *b, *c;
-  Interval yi;
-  Arc* arc;     // the arc it removes
-  bool valid;   // false once the arc or its neighbours changed
-  struct Circle {
-    Rational cx, cy, R;
-  };
-  mutable std::unique_ptr<Circle> known{};  // the rationals, once computed
-};
-
-/// The centre and squared radius of the circle through a, b, c (not collinear), as rationals.
-const Event::Circle& exact(const Event& e) {
-  if (e.known) return *e.known;
-  const Site &a = *e.a, &b = *e.b, &c = *e.c;
-  const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const Rational D = 2 * (bx * cy - by * cx), B = bx * bx + by * by, C = cx * cx + cy * cy;
-  const Rational ux = (cy * B - by * C) / D, uy = (bx * C - cx * B) / D;
-  e.known = std::make_unique<Event::Circle>(Event::Circle{a.x + ux, a.y + uy, ux * ux + uy * uy});
-  return *e.known;
-}
-
-/// The enclosure of the event's y, cy + √R, by the same formula in intervals.
-Interval event_y(const Site& a, const Site& b, const Site& c) {
-  const Interval bx = b.xi - a.xi, by = b.yi - a.yi, cx = c.xi - a.xi, cy = c.yi - a.yi;
-  const Interval D = bx * cy - by * cx, B = bx * bx + by * by, C = cx * cx + cy * cy;
-  const Interval h = recip(D + D);
-  const Interval ux = (cy * B - by * C) * h, uy = (bx * C - cx * B) * h;
-  return a.yi + uy + sqrt(ux * ux + uy * uy);
-}
-
-//> fortune-event-order
-/// The order of events: sign(e − site) by y then x, a circle event first at one point.
-Sign event_vs_site(const Event& ev, const Site& s) {
-  if (const int f = (ev.yi - s.yi).sign(); f != 2) return static_cast<Sign>(f);
-  const Event::Circle& e = exact(ev);
-  const Sign y = root_sign(e.cy - s.y, Rational(1), e.R);
-  if (y != ZERO) return y;
-  const Sign x = sign_of(e.cx - s.x);
-  return x != ZERO ? x : NEGATIVE;
-}
-
-/// sign(e − f) by y then x: d + √R_e − √R_f with d = cy_e − cy_f.
-Sign event_vs_event(const Event& ev, const Event& fv) {
-  if (const int s = (ev.yi - fv.yi).sign(); s != 2) return static_cast<Sign>(s);
-  const Event::Circle &e = exact(ev), &f = exact(fv);
-  const Rational d = e.cy - f.cy;
-  const Sign u = root_sign(d, Rational(1), e.R);  // d + √R_e, compared with √R_f ≥ 0
-  Sign y;
-  if (u == NEGATIVE) y = NEGATIVE;
-  else if (u == ZERO) y = sgn(f.R) > 0 ? NEGATIVE : ZERO;
-  else y = root_sign(d * d + e.R - f.R, Rational(2 * d), e.R);  // (d + √R_e)² − R_f
-  return y != ZERO ? y : sign_of(e.cx - f.cx);
-}
-//< fortune-event-order
 
 /// An edge of the sweep: its two sites and its two ends (vertex numbers, -1 while open).
 struct SweepEdge {
@@ -137,6 +68,7 @@ struct SweepEdge {
 /// A vertex of the sweep: its centre and its three sites (counter-clockwise).
 struct SweepVertex {
   Index a, b, c;
+  int event;  // the circle event that made it
 };
 
 /// The sweep's state; `hook` hears its events (trace/hook.hpp: site, circle, schedule,
@@ -145,24 +77,24 @@ struct SweepVertex {
 template <class H>
 class Sweep {
  public:
-  Sweep(const std::vector<Site>& sites, std::span<const Point> points, H& hook) : s_(sites), p_(points), hook_(hook) {}
+  Sweep(const std::vector<Site>& sites, H& hook) : s_(sites), hook_(hook) { ev_.reserve(3 * sites.size()); }
 
   //> fortune-sweep
   void run() {
     std::size_t i = 1;
-    beach_.start(beach_.make(0));
+    beach_.start(make(0));
     Arc* last = head_ = beach_.root;  // the leftmost arc: never removed (no left neighbour)
     report(trace::Event::site, {s_[0].id});
-    for (; i < s_.size() && s_[i].y == s_[0].y; ++i) {  // the first row: vertical rays
-      Arc* n = beach_.make(int(i));
+    for (; i < s_.size() && compare_sites(s_[i], s_[0], false) == 0; ++i) {  // the first row: vertical rays
+      Arc* n = make(int(i));
       beach_.insert_after(last, n);
       n->edge = new_edge(last->site, n->site), n->end = 1;
       last = n;
       report(trace::Event::site, {s_[i].id});
     }
     while (i < s_.size() || !queue_.empty()) {
-      if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top()], s_[i]) < 0)) {
-        const int e = queue_.top();
+      if (!queue_.empty() && (i == s_.size() || event_vs_site(ev_[queue_.top().id], s_[i]) < 0)) {
+        const int e = queue_.top().id;
         queue_.pop();
         if (ev_[e].valid) remove(e);
       } else {
@@ -174,6 +106,15 @@ class Sweep {
 
   std::vector<SweepEdge> edges;
   std::vector<SweepVertex> vertices;
+  /// True when the events of vertices v and w have disjoint enclosures of y (two circles).
+  bool apart(int v, int w) const {
+    const Interval &a = ev_[vertices[v].event].yi, &b = ev_[vertices[w].event].yi;
+    return a.hi < b.lo || b.hi < a.lo;
+  }
+  /// True when the sweep found vertices v and w on one circle (then they are one point).
+  bool known_cocircular(int v, int w) const {
+    return circle_of(ev_, vertices[v].event) == circle_of(ev_, vertices[w].event);
+  }
 
  private:
   int new_edge(int p, int q) {
@@ -194,8 +135,30 @@ class Sweep {
     if constexpr (trace::traced<H>) report(trace::Event::breakpoint, {s_[l->site].id, s_[r->site].id, s.id}, g);
     return g;
   }
+  /// The breakpoint of the arcs of l and r on the sweep line y = L, in rounded doubles (a guess:
+  /// the formula of breakpoint_side, or NaN).
+  double guess(const Arc* l, const Arc* r, double L) const {
+    const Site &p = s_[l->site], &q = s_[r->site];
+    if (p.y == q.y) return 0.5 * (p.x + q.x);
+    const double dp = p.y - L, dq = q.y - L, dx = p.x - q.x, dy = p.y - q.y;
+    return (dq * p.x - dp * q.x - std::sqrt(dp * dq * (dx * dx + dy * dy))) / (dq - dp);
+  }
+  /// A new arc of site i.
+  Arc* make(int i) { return beach_.make(i); }
   /// The arc above the abscissa of site s (the right one on a breakpoint).
+  /// Untraced, a search in rounded doubles guesses the arc, and two exact comparisons (its two
+  /// breakpoints) certify it: the arc with s.x in (left breakpoint, right breakpoint] is unique,
+  /// so a certified guess is the answer; a wrong guess (ties, rounding) goes the exact way.
   Arc* locate(const Site& s) {
+    if constexpr (!trace::traced<H>) {
+      Arc* n = beach_.root;
+      for (;;) {
+        if (n->prev && s.x < guess(n->prev, n, s.y)) n = n->left;
+        else if (n->next && !(s.x < guess(n, n->next, s.y))) n = n->right;
+        else break;
+      }
+      if ((!n->prev || side(n->prev, n, s) <= 0) && (!n->next || side(n, n->next, s) > 0)) return n;
+    }
     Arc* n = beach_.root;
     for (;;) {
       if (n->prev && side(n->prev, n, s) > 0) n = n->left;
@@ -212,8 +175,8 @@ class Sweep {
   /// A site event: the arc above splits into two around the new arc.
   void insert(int site) {
     Arc* a = locate(s_[site]);
-    Arc* n = beach_.make(site);
-    Arc* b = beach_.make(a->site);
+    Arc* n = make(site);
+    Arc* b = make(a->site);
     beach_.insert_after(a, n);
     beach_.insert_after(n, b);
     const int e = new_edge(a->site, site);
@@ -230,7 +193,7 @@ class Sweep {
     Arc* l = m->prev;
     Arc* r = m->next;
     const int v = int(vertices.size());
-    vertices.push_back({ s_[l->site].id, s_[m->site].id, s_[r->site].id});
+    vertices.push_back({s_[l->site].id, s_[m->site].id, s_[r->site].id, e});
     edges[m->edge].end[m->end] = v;
     edges[r->edge].end[r->end] = v;
     const int g = new_edge(l->site, r->site);
@@ -250,27 +213,34 @@ class Sweep {
     Arc* r = m->next;
     if (!l || !r || l->site == r->site) return;
     const Site &a = s_[l->site], &b = s_[m->site], &c = s_[r->site];
-    if (orient(p_[a.id], p_[b.id], p_[c.id]) != POSITIVE) return;
-    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true});
+    if (orient(a.p, b.p, c.p) != POSITIVE) return;
+    ev_.push_back(Event{&a, &b, &c, event_y(a, b, c), m, true, false, int(ev_.size())});
     m->event = int(ev_.size()) - 1;
-    queue_.push(m->event);
+    queue_.push({ev_.back().yi.lo, ev_.back().yi.hi, m->event});
     report(trace::Event::schedule, {a.id, b.id, c.id});
   }
+  /// An event in the queue: the enclosure of its y beside its number, so that most
+  /// comparisons read neither the event nor its sites.
+  struct Queued {
+    double lo, hi;
+    int id;
+  };
   struct Later {
-    const std::deque<Event>* ev;
-    bool operator()(int a, int b) const {
-      const Sign s = event_vs_event((*ev)[a], (*ev)[b]);
-      return s != ZERO ? s > 0 : a > b;
+    const std::vector<Event>* ev;
+    bool operator()(const Queued& a, const Queued& b) const {
+      if (a.lo > b.hi) return true;
+      if (a.hi < b.lo) return false;
+      const Sign s = event_vs_event(*ev, a.id, b.id);
+      return s != ZERO ? s > 0 : a.id > b.id;
     }
   };
   const std::vector<Site>& s_;
-  std::span<const Point> p_;
   H& hook_;
   Arc* head_ = nullptr;
   std::vector<std::size_t> ids_;  // the beach line in input indices, when traced
   detail::BeachLine beach_;
-  std::deque<Event> ev_;
-  std::priority_queue<int, std::vector<int>, Later> queue_{Later{&ev_}};
+  std::vector<Event> ev_;
+  std::priority_queue<Queued, std::vector<Queued>, Later> queue_{Later{&ev_}};
 };
 
 /// The pole [0, ℓ_x, ℓ_y] of ℓ = p ∨ q: the point of Ω to the left of p → q.
@@ -300,20 +270,41 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
     if (!(p.w() > 0))
       throw Undefined("fortune: site " + std::to_string(i) + " " + to_string(p) +
                       " is not on the front side (Fortune's sweep works in the plane of the front side)");
-    s.push_back({Rational(p.x()) / Rational(p.w()), Rational(p.y()) / Rational(p.w()), Index(i), {}, {}});
+    const bool one = p.w() == 1;  // then x/w and y/w are the doubles x and y
+    const double x = one ? p.x() : p.x() / p.w(), y = one ? p.y() : p.y() / p.w();
+    s.push_back({x, y, one ? Interval{x, x} : Interval::around(x).settled(), one ? Interval{y, y} : Interval::around(y).settled(), p,
+                 Index(i), one});
   }
-  std::stable_sort(s.begin(), s.end(), [](const Site& a, const Site& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  // The sweep order (y, then x, then the input order): on keys of 24 bytes when every site has
+  // w = 1, else on the sites by compare_sites.
+  std::vector<Index> order(s.size());
+  if (std::all_of(s.begin(), s.end(), [](const Site& x) { return x.exact; })) {
+    struct Key {
+      double y, x;
+      Index i;
+    };
+    std::vector<Key> k(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) k[i] = {s[i].y, s[i].x, Index(i)};
+    std::sort(k.begin(), k.end(), [](const Key& a, const Key& b) {
+      return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : a.i < b.i;
+    });
+    for (std::size_t i = 0; i < s.size(); ++i) order[i] = k[i].i;
+  } else {
+    std::iota(order.begin(), order.end(), Index(0));
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return compare_sites(s[a], s[b], true) < 0; });
+  }
   std::vector<Site> u;  // distinct sites, the first of each group kept
   u.reserve(s.size());
-  for (Site& x : s) {
-    x.xi = Interval::of(x.x), x.yi = Interval::of(x.y);
-    if (!u.empty() && u.back().x == x.x && u.back().y == x.y) out.duplicates.push_back({x.id, u.back().id});
-    else u.push_back(std::move(x));
+  for (Index i : order) {
+    const Site& x = s[i];
+    if (!u.empty() && compare_sites(u.back(), x, true) == 0) out.duplicates.push_back({x.id, u.back().id});
+    else u.push_back(x);
   }
+  std::vector<Site>().swap(s);
   std::sort(out.duplicates.begin(), out.duplicates.end());
   out.first.push_back(0);
   if (u.size() < 2) return out;
-  Sweep<H> sweep(u, points, hook);
+  Sweep<H> sweep(u, hook);
   sweep.run();
   // Contract the zero-length edges (cocircular sites): vertices at one centre become one.
   // Both ends of an edge between s and t are circles through s and t (the edge's breakpoint
@@ -325,48 +316,53 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
   };
   std::vector<int> up(V.size());
   std::iota(up.begin(), up.end(), 0);
+  // Two circles through s and t with one centre are one circle, with one event: ends whose
+  // events' enclosures are apart are two points, without in_circle.
   for (const SweepEdge& e : sweep.edges)
-    if (e.end[0] >= 0 && e.end[1] >= 0 &&
-        in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO)
+    if (e.end[0] >= 0 && e.end[1] >= 0 && !sweep.apart(e.end[0], e.end[1]) &&
+        (sweep.known_cocircular(e.end[0], e.end[1]) ||
+         in_circle(points[e.s], points[e.t], points[third(V[e.end[0]], e)], points[third(V[e.end[1]], e)]) == ZERO))
       up[find(up, e.end[0])] = find(up, e.end[1]);
   std::vector<int> number(V.size(), -1);
-  std::vector<std::vector<Index>> around;
+  std::vector<Index> start{0};  // the sites of the sweep vertices of vertex k: around[start[k] ..)
   for (std::size_t v = 0; v < V.size(); ++v) {
     const int r = find(up, int(v));
     if (number[r] < 0) {
       number[r] = int(out.circles.size());
       out.circles.push_back({V[r].a, V[r].b, V[r].c});
-      around.emplace_back();
+      start.push_back(0);
     }
     number[v] = number[r];
-    for (Index x : {V[v].a, V[v].b, V[v].c}) around[number[v]].push_back(x);
+    start[number[v] + 1] += 3;
   }
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<Index> around(start.back()), fill(start.begin(), start.end() - 1);
+  for (std::size_t v = 0; v < V.size(); ++v)
+    for (Index x : {V[v].a, V[v].b, V[v].c}) around[fill[number[v]]++] = x;
   //> fortune-around
-  // The sites of each vertex, counter-clockwise around its centre (exact: rationals).
-  using Vec = std::pair<Rational, Rational>;
-  auto lower = [](const Vec& v) { return sgn(v.second) < 0 || (sgn(v.second) == 0 && sgn(v.first) < 0); };
-  for (std::size_t k = 0; k < around.size(); ++k) {
-    auto& a = around[k];
-    if (a.size() == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
-      out.cells.insert(out.cells.end(), a.begin(), a.end());
+  // The sites of each vertex, counter-clockwise around its centre (exact).
+  std::vector<Index> rank(points.size());  // a site's place in the sweep order
+  for (std::size_t k = 0; k < u.size(); ++k) rank[u[k].id] = Index(k);
+  out.cells.reserve(around.size());
+  std::vector<Index> a;
+  for (std::size_t k = 0; k + 1 < start.size(); ++k) {
+    if (start[k + 1] - start[k] == 3) {  // one circle event: l, m, r turn counter-clockwise (orient > 0)
+      out.cells.insert(out.cells.end(), around.begin() + start[k], around.begin() + start[k + 1]);
       out.first.push_back(Index(out.cells.size()));
       continue;
     }
+    a.assign(around.begin() + start[k], around.begin() + start[k + 1]);
+    // Four or more sites on one circle, whose centre is the vertex: counter-clockwise around
+    // the centre is counter-clockwise along the circle, the order of a convex polygon. From its
+    // lowest site o (the first in sweep order), every other site is in the half-plane above
+    // o's row or to its right on it, and no two are collinear with o (three points of a
+    // circle never are), so orient(o, p, q) > 0 orders them (exact, filtered; no centre made).
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
-    std::vector<std::pair<Vec, Index>> d;
-    const ExactPoint o = out.vertex(Index(k));
-    const Rational ox = Rational(o.x()) / Rational(o.w()), oy = Rational(o.y()) / Rational(o.w());
-    for (Index x : a) {
-      const Point& p = points[x];
-      d.push_back({{Rational(p.x()) / Rational(p.w()) - ox, Rational(p.y()) / Rational(p.w()) - oy}, x});
-    }
-    std::sort(d.begin(), d.end(), [&](const auto& p, const auto& q) {
-      const bool hp = lower(p.first), hq = lower(q.first);
-      if (hp != hq) return hq;
-      return sgn(p.first.first * q.first.second - p.first.second * q.first.first) > 0;
-    });
-    for (const auto& x : d) out.cells.push_back(x.second);
+    std::iter_swap(a.begin(), std::min_element(a.begin(), a.end(), [&](Index x, Index y) { return rank[x] < rank[y]; }));
+    const Point& o = points[a[0]];
+    std::sort(a.begin() + 1, a.end(), [&](Index p, Index q) { return orient(o, points[p], points[q]) == POSITIVE; });
+    out.cells.insert(out.cells.end(), a.begin(), a.end());
     out.first.push_back(Index(out.cells.size()));
   }
   //< fortune-around
@@ -378,9 +374,15 @@ FortuneDiagram sweep_sites(std::span<const Point> points, H& hook) {
       out.lines.push_back({e.s, e.t});
     } else {
       const int v = std::max(a, b);
-      Index w = e.s;  // a third site of the vertex: the ray leaves it behind
+      // A third site of the vertex: the ray leaves it behind (s t is a hull edge, so every
+      // other site of the vertex is on one side of it; the first found, not a scan of them all:
+      // n cocircular sites have n rays at one vertex).
+      Index w = e.s;
       for (Index x : out.vertex_sites(Index(v)))
-        if (x != e.s && x != e.t) w = x;
+        if (x != e.s && x != e.t) {
+          w = x;
+          break;
+        }
       const bool left = orient(points[e.s], points[e.t], points[w]) == POSITIVE;
       out.rays.push_back({Index(v), left ? left_pole(points[e.t], points[e.s]) : left_pole(points[e.s], points[e.t]), e.s, e.t});
     }

@@ -30,7 +30,14 @@ class BeachLine {
   /// A new arc of `site`, not yet in the line.
   Arc* make(int site) {
     seed_ = seed_ * 6364136223846793005ULL + 1442695040888963407ULL;
-    arcs_.push_back(Arc{site, std::uint32_t(seed_ >> 33)});
+    const Arc a{site, std::uint32_t(seed_ >> 33)};
+    if (free_) {  // an erased arc's place (the line holds O(√n) arcs on uniform input, not 2n)
+      Arc* n = free_;
+      free_ = n->next;
+      *n = a;
+      return n;
+    }
+    arcs_.push_back(a);
     return &arcs_.back();
   }
   /// Puts `n` first (the line is empty).
@@ -60,6 +67,7 @@ class BeachLine {
     else n->up->right = nullptr;
     if (n->prev) n->prev->next = n->next;
     if (n->next) n->next->prev = n->prev;
+    n->next = free_, free_ = n;  // reused by `make`: nothing points to an erased arc
   }
 
  private:
@@ -82,6 +90,7 @@ class BeachLine {
     else g->right = n;
   }
   std::deque<Arc> arcs_;             // stable addresses
+  Arc* free_ = nullptr;              // erased arcs, linked by `next`
   std::uint64_t seed_ = 0x9e3779b97f4a7c15ULL;
 };
 

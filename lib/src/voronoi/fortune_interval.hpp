@@ -54,6 +54,12 @@ struct Interval {
     const double l = std::sqrt(std::max(a.lo, 0.0)), h = std::sqrt(std::max(a.hi, 0.0));
     return {std::max(l - pad(l), 0.0), h + pad(h)};
   }
+  /// The same interval when both bounds are finite, else the whole line (−∞, +∞), whose
+  /// bounds decide no comparison (`lo > other.hi` and `hi < other.lo` are then false).
+  Interval settled() const {
+    if (std::isfinite(lo) && std::isfinite(hi)) return *this;
+    return {-HUGE_VAL, HUGE_VAL};
+  }
   /// The sign when 0 is outside the interval, else 2 (undecided; also for a bound not finite).
   int sign() const {
     if (!std::isfinite(lo) || !std::isfinite(hi)) return 2;

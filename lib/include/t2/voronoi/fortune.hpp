@@ -34,9 +34,10 @@
 ///    d_p = y_p − L, d_q = y_q − L, the breakpoint is x = (d_q x_p − d_p x_q − √(d_p d_q |pq|²))
 ///    / (d_q − d_p) when d_p ≠ d_q (the midpoint of x_p, x_q when d_p = d_q), so sign(x − a) =
 ///    sign(d_q − d_p) · sign(A − √C) with A = d_q x_p − d_p x_q − a(d_q − d_p), C = d_p d_q |pq|².
-///  All A + B√C signs go through `sign_of_root_sum` (sign_sqrt.hpp), on integers (the rationals
-///  times their positive denominators), after an interval filter that decides most of them. Three consecutive arcs make a circle event exactly when
-///  their sites turn counter-clockwise (`orient` > 0).
+///  All A + B√C signs are exact: on the sites' doubles as polynomials (fortune_exact.hpp), or
+///  through `sign_of_root_sum` (sign_sqrt.hpp) on integers (rationals times their positive
+///  denominators), after filters that decide most of them (**Cost**). Three consecutive arcs
+///  make a circle event exactly when their sites turn counter-clockwise (`orient` > 0).
 ///
 /// **Degeneracies** (seed 001). Duplicate sites are reduced to the first of each group (listed in
 /// `duplicates` as (dropped, kept)). The first row of sites (the lowest y, several of them)
@@ -48,8 +49,15 @@
 /// zero. Collinear sites give no circle event: only `lines`.
 ///
 /// **Cost.** O(n log n) expected (O(n) events, each with O(log n) queue and treap steps). Each
-/// predicate is first evaluated in interval arithmetic with certified bounds (doubles); only the
-/// signs whose interval holds 0 are computed on GMP rationals.
+/// predicate is first evaluated in interval arithmetic with certified bounds (doubles). The
+/// arc above a site is guessed by a search in rounded doubles and certified by its two exact
+/// breakpoint comparisons. The queue keeps each event's enclosure beside its number. When an
+/// enclosure does not decide, for sites with w = 1: a tight enclosure of the event's y (the
+/// circle's coefficients exact as expansions), then the exact signs of the polynomials on the
+/// doubles (the kernel's filter: expansions, GMP out of their range); equal circles (translates
+/// in lattices, mirror images in symmetric input, one circle of cocircular sites, kept in
+/// classes) are found by in_circle. GMP rationals are made only for sites with w ≠ 1, or for
+/// two events whose order none of these decides.
 
 #include <array>
 #include <functional>
