@@ -473,7 +473,7 @@ std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>
 }
 
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments,
-                                                      const std::function<void(const trace::Report&)>& hook) {
+                                                      const trace::AnyHook& hook) {
   return circular_sweep::Circular(segments, detail::circular_centre(segments)).run(hook);
 }
 

@@ -415,7 +415,7 @@ std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& s
 }
 
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments,
-                                                   const std::function<void(const trace::Report&)>& hook) {
+                                                   const trace::AnyHook& hook) {
   return plane_sweep::Sweep(segments).run(hook);
 }
 

@@ -240,7 +240,7 @@ Location walk(const Subdivision& S, const Point& p, Index qv, std::vector<Index>
   return walk_from(S, p, qv, crossed, none);
 }
 
-Location walk(const Subdivision& S, const Point& p, Index qv, const std::function<void(const trace::Report&)>& hook) {
+Location walk(const Subdivision& S, const Point& p, Index qv, const trace::AnyHook& hook) {
   return walk_from(S, p, qv, nullptr, hook);
 }
 

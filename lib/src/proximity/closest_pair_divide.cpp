@@ -178,7 +178,7 @@ Pair closest_pair_divide(std::span<const Point> P) {
   return divide_pair(P, none);
 }
 
-Pair closest_pair_divide(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+Pair closest_pair_divide(std::span<const Point> P, const trace::AnyHook& hook) {
   return divide_pair(P, hook);
 }
 

@@ -262,7 +262,7 @@ EmptyCircle largest_empty_circle(std::span<const Point> P) {
   return empty_circle(P, none);
 }
 
-EmptyCircle largest_empty_circle(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+EmptyCircle largest_empty_circle(std::span<const Point> P, const trace::AnyHook& hook) {
   return empty_circle(P, hook);
 }
 

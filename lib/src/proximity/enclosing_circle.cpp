@@ -204,7 +204,7 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points) {
 }
 
 EnclosingCircle smallest_enclosing_circle(std::span<const Point> points,
-                                          const std::function<void(const trace::Report&)>& hook) {
+                                          const trace::AnyHook& hook) {
   return enclosing_circle(points, hook);
 }
 

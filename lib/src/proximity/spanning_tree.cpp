@@ -152,7 +152,7 @@ std::vector<Edge> minimum_spanning_tree(std::span<const Point> P) {
   return spanning_tree(P, none);
 }
 
-std::vector<Edge> minimum_spanning_tree(std::span<const Point> P, const std::function<void(const trace::Report&)>& hook) {
+std::vector<Edge> minimum_spanning_tree(std::span<const Point> P, const trace::AnyHook& hook) {
   return spanning_tree(P, hook);
 }
 

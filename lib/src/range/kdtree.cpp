@@ -91,7 +91,7 @@ struct Reporter {
 struct KdTracer {
   const std::vector<DrawnPoint>& p;
   std::size_t side;
-  const std::function<void(const trace::Report&)>& hook;
+  const trace::AnyHook& hook;
   std::vector<std::size_t>& out;
   void enter(std::size_t lo, std::size_t hi, int depth, unsigned known) {
     trace::Report r;
@@ -147,7 +147,7 @@ std::vector<std::size_t> KdTree::report(const ExactIsoRect& r) const {
 }
 
 std::vector<std::size_t> KdTree::report(const ExactIsoRect& r,
-                                        const std::function<void(const trace::Report&)>& hook) const {
+                                        const trace::AnyHook& hook) const {
   return range::report_in(r, omega_, [&](const ExactBBox& b, std::vector<std::size_t>& out) {
     const Window w(b);
     KdTracer t{side_[w.side], static_cast<std::size_t>(w.side), hook, out};

@@ -397,7 +397,7 @@ FortuneDiagram fortune(std::span<const Point> points) {
   return sweep_sites(points, none);
 }
 
-FortuneDiagram fortune(std::span<const Point> points, const std::function<void(const trace::Report&)>& hook) {
+FortuneDiagram fortune(std::span<const Point> points, const trace::AnyHook& hook) {
   return sweep_sites(points, hook);
 }
 

@@ -35,12 +35,9 @@
 #include "t2/kernel/number.hpp"
 #include "t2/kernel/point.hpp"
 #include "t2/kernel/segment.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
-
-namespace trace {
-struct Report;
-}
 
 /// One reported point and the ascending indices of the segments through it.
 struct IntersectionPoint {
@@ -76,7 +73,7 @@ std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& s
 /// after each event (`Event::sweep`, the event point exact) and each test of two neighbours
 /// (`Event::neighbours`), in segment indices. Only this overload carries trace code.
 std::vector<IntersectionPoint> intersections_sweep(const std::vector<Segment>& segments,
-                                                   const std::function<void(const trace::Report&)>& hook);
+                                                   const trace::AnyHook& hook);
 
 /// The circular sweep of T² (intersect/circular.cpp; seed 000 §5.8, Algorithm 16): a half-line
 /// from a centre o to ¬o turns once around o, and the segments it crosses at its initial
@@ -90,7 +87,7 @@ std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>
 /// the traced `intersections_sweep` tells, with the status ordered from the centre out; the
 /// points on the initial half-line are reported (`found`) after the turn, where they are judged.
 std::vector<IntersectionPoint> intersections_circular(const std::vector<Segment>& segments,
-                                                      const std::function<void(const trace::Report&)>& hook);
+                                                      const trace::AnyHook& hook);
 
 /// p scaled by the positive factor that leaves W, X, Y without common factor.
 ExactPoint reduced(const ExactPoint& p);

@@ -91,7 +91,7 @@ Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
 /// @param q the starting vertex (an index into S.points())
 /// @param hook hears the reports
 Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
-              const std::function<void(const trace::Report&)>& hook);
+              const trace::AnyHook& hook);
 
 /// Locates p by walking from the point `from`, which must be strictly inside face `face` (the
 /// last answer of a run of queries, say), along the segment to p; when p = ¬from it starts

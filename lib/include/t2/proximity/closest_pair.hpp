@@ -51,6 +51,6 @@ std::pair<Triangulation::Index, Triangulation::Index> closest_pair_divide(std::s
 /// (`Event::compare_pair`, POSITIVE when it is the new closest). Only this overload carries
 /// trace code.
 std::pair<Triangulation::Index, Triangulation::Index> closest_pair_divide(
-    std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
+    std::span<const Point> points, const trace::AnyHook& hook);
 
 }  // namespace t2

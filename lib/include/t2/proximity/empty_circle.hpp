@@ -87,6 +87,6 @@ EmptyCircle largest_empty_circle(std::span<const Point> points);
 /// in input indices): each crossing of a Voronoi edge with a hull edge, each Voronoi vertex whose
 /// bound can still beat the best (also those outside the hull, with sign NEGATIVE), or each
 /// midpoint of collinear sites, the circle lent exact. Only this overload carries trace code.
-EmptyCircle largest_empty_circle(std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
+EmptyCircle largest_empty_circle(std::span<const Point> points, const trace::AnyHook& hook);
 
 }  // namespace t2

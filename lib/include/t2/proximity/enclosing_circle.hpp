@@ -99,6 +99,6 @@ EnclosingCircle smallest_enclosing_circle(std::span<const Point> points);
 /// and every test of a site against it (`Event::in_disk`, with its sign), in input indices.
 /// Only this overload carries trace code; the one above has none.
 EnclosingCircle smallest_enclosing_circle(std::span<const Point> points,
-                                          const std::function<void(const trace::Report&)>& hook);
+                                          const trace::AnyHook& hook);
 
 }  // namespace t2

@@ -59,6 +59,6 @@ std::vector<std::pair<Triangulation::Index, Triangulation::Index>> minimum_spann
 /// (`Event::cycle_edge`), with the union–find forest after it. Only this overload carries trace
 /// code; the one above has none.
 std::vector<std::pair<Triangulation::Index, Triangulation::Index>> minimum_spanning_tree(
-    std::span<const Point> points, const std::function<void(const trace::Report&)>& hook);
+    std::span<const Point> points, const trace::AnyHook& hook);
 
 }  // namespace t2

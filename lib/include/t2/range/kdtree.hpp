@@ -51,7 +51,7 @@ class KdTree {
   /// carries trace code; the one above has none.
   /// @param r the closed rectangle
   /// @param hook hears the reports
-  std::vector<std::size_t> report(const ExactIsoRect& r, const std::function<void(const trace::Report&)>& hook) const;
+  std::vector<std::size_t> report(const ExactIsoRect& r, const trace::AnyHook& hook) const;
   /// The tree's nodes and leaves a query of r enters (the quantity the √n bound counts).
   std::size_t visits(const ExactIsoRect& r) const;
   /// The points of side s (0 front, 1 back) in tree order: the implicit tree of the file

@@ -22,6 +22,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <span>
 #include <type_traits>
@@ -185,6 +186,11 @@ struct NoTrace {
   /// Hears nothing.
   void operator()(const Report&) const noexcept {}
 };
+
+/// A hook behind a compiled interface: the traced overload of an algorithm whose body is compiled
+/// in the library (the sweeps, Fortune, the walk, the kd-tree, the proximity problems) takes one,
+/// so that its traced code is compiled once and any callable converts to it.
+using AnyHook = std::function<void(const Report&)>;
 
 /// False for `NoTrace`: the algorithm then builds no report.
 template <class T>

@@ -117,6 +117,6 @@ FortuneDiagram fortune(std::span<const Point> sites);
 /// comparison of the search for the arc above a site, with its sign. Duplicate sites are
 /// dropped before the sweep and never reported. Only this overload carries trace code; the one
 /// above has none.
-FortuneDiagram fortune(std::span<const Point> sites, const std::function<void(const trace::Report&)>& hook);
+FortuneDiagram fortune(std::span<const Point> sites, const trace::AnyHook& hook);
 
 }  // namespace t2
