@@ -29,22 +29,31 @@ std::function<Timed(BenchInput&)> timed(HullAlgorithm a) {
   return [a](BenchInput& in) -> Timed { return [&P = in.points, a] { return t2::convex_hull(P, a).size(); }; };
 }
 
-// Jarvis or Graham with the recorder, in the chart of the points (none when they have no hull).
-void record_chart(HullAlgorithm a, const Points& P, const std::string& name, tr::Recording& rec) {
+// A hull algorithm of one chart, traced: `traced(idx, chart)` runs it on every point in the chart
+// of the points (none when they have no hull, or one point), then the answer step.
+template <class Traced>
+void record_in_chart(const Points& P, const std::string& name, tr::Recording& rec, Traced traced) {
   std::vector<std::size_t> h;
   try {
     const t2::Chart chart = t2::chart_for(std::span<const t2::Point>(P), h);  // throws when no hull
     if (h.size() != 1) {
       std::vector<std::size_t> idx(P.size());
       std::iota(idx.begin(), idx.end(), std::size_t{0});
-      tr::HullRecorder r(a == HullAlgorithm::jarvis ? tr::HullAlgo::jarvis : tr::HullAlgo::graham, P, rec);
-      h = a == HullAlgorithm::jarvis ? t2::jarvis(std::span<const t2::Point>(P), idx, chart, r)
-                                     : t2::graham(std::span<const t2::Point>(P), idx, chart, r);
+      h = traced(idx, chart);
     }
   } catch (const t2::NoHull& e) {
     throw t2::Undefined(fmt::format("{}: no convex hull: {}", name, e.what()));
   }
   record_hull_answer(h, rec);
+}
+
+// Jarvis or Graham with the recorder.
+void record_chart(HullAlgorithm a, const Points& P, const std::string& name, tr::Recording& rec) {
+  record_in_chart(P, name, rec, [&](const std::vector<std::size_t>& idx, const t2::Chart& chart) {
+    tr::HullRecorder r(a == HullAlgorithm::jarvis ? tr::HullAlgo::jarvis : tr::HullAlgo::graham, P, rec);
+    return a == HullAlgorithm::jarvis ? t2::jarvis(std::span<const t2::Point>(P), idx, chart, r)
+                                      : t2::graham(std::span<const t2::Point>(P), idx, chart, r);
+  });
 }
 
 void record_merge(const Points& P, const std::string& name, tr::Recording& rec) {
@@ -134,19 +143,10 @@ class ChanRecorder {
 };
 
 void record_chan(const Points& P, const std::string& name, tr::Recording& rec) {
-  std::vector<std::size_t> h;
-  try {
-    const t2::Chart chart = t2::chart_for(std::span<const t2::Point>(P), h);  // throws when no hull
-    if (h.size() != 1) {
-      std::vector<std::size_t> idx(P.size());
-      std::iota(idx.begin(), idx.end(), std::size_t{0});
-      ChanRecorder r(P, rec);
-      h = t2::chan(std::span<const t2::Point>(P), idx, chart, r);
-    }
-  } catch (const t2::NoHull& e) {
-    throw t2::Undefined(fmt::format("{}: no convex hull: {}", name, e.what()));
-  }
-  record_hull_answer(h, rec);
+  record_in_chart(P, name, rec, [&](const std::vector<std::size_t>& idx, const t2::Chart& chart) {
+    ChanRecorder r(P, rec);
+    return t2::chan(std::span<const t2::Point>(P), idx, chart, r);
+  });
 }
 
 std::string named(HullAlgorithm a) { return std::string(t2::name(a)); }
