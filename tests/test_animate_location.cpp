@@ -230,7 +230,7 @@ TEST(AnimateKdTree, AnswerIsTheTreesAndBruteForceAndEverySplitPassesThroughItsPo
         const auto [a, b] = lines[j];
         EXPECT_EQ(orient(a, b, along), ZERO) << s.text;
         EXPECT_TRUE(std::any_of(s.points.begin(), s.points.end(),
-                                [&](std::size_t i) { return orient(a, b, P[i]) == ZERO; }))
+                                [&, a = a, b = b](std::size_t i) { return orient(a, b, P[i]) == ZERO; }))
             << s.text;
       }
       objects = lines.size();

@@ -133,7 +133,7 @@ TEST(CircularSweep, EveryKindOfSegment) {  // front, back, through Ω, on Ω, an
         return flip ? random_point(rng, 1, 2, c) : random_point(rng, -2, -1, c);
       }));
     } else {
-      check(random_segments(30, [&] { return random_point(rng, lo, hi, c); }));
+      check(random_segments(30, [&, lo = lo, hi = hi] { return random_point(rng, lo, hi, c); }));
     }
   }
 }

@@ -50,10 +50,11 @@ const std::string& seccomp_program() {
     // so that the C library falls back to clone.
     for (unsigned long flag : {CLONE_NEWUSER, CLONE_NEWNS, CLONE_NEWNET, CLONE_NEWPID, CLONE_NEWIPC,
                                CLONE_NEWUTS, CLONE_NEWCGROUP})
-      seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag));
+      seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, scmp_arg_cmp{0, SCMP_CMP_MASKED_EQ, flag, flag});
     seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
-    // Netlink sockets talk to the kernel's configuration (routes, audit, uevents ...).
-    seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(socket), 1, SCMP_A0(SCMP_CMP_EQ, AF_NETLINK));
+    // Netlink sockets talk to the kernel's configuration (routes, audit, uevents ...). (The
+    // comparisons are written as structs: SCMP_A0 is a C compound literal, which C++ lacks.)
+    seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(socket), 1, scmp_arg_cmp{0, SCMP_CMP_EQ, AF_NETLINK, 0});
     const int fd = memfd_create("t2-seccomp", MFD_CLOEXEC);
     std::string bytes;
     if (fd >= 0 && seccomp_export_bpf(ctx, fd) == 0 && lseek(fd, 0, SEEK_SET) == 0) {
@@ -260,7 +261,7 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   t2proc::Spec s;
   s.argv = std::move(a);
   s.env = std::vector<std::string>{"PATH=/usr/bin:/bin", "HOME=/tmp", "TMPDIR=/tmp", "LANG=C", "LC_ALL=C"};
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(T2_SANITIZE)
   // An ASan build of t2 builds sandboxed programs with ASan too; LeakSanitizer stops the world
   // with ptrace at exit, which the seccomp filter forbids: no leak check inside the sandbox.
   // And crashes stay crashes: signals are left to kill the program, as in a plain build.

@@ -131,13 +131,13 @@ void calipers(const std::vector<Point>& Q, Pair&& pair, Edge&& edge) {
 /// O(h) (plus the sort). Throws `BadInput` for points on Ω or on both sides.
 inline std::vector<std::pair<std::size_t, std::size_t>> antipodal_pairs(std::span<const Point> P,
                                                                         std::span<const std::size_t> hull) {
-  auto [Q, at] = detail::front_copy(P, hull);
+  const auto [Q, at] = detail::front_copy(P, hull);
   std::vector<std::pair<std::size_t, std::size_t>> out;
   if (Q.size() == 2) out.emplace_back(std::min(at[0], at[1]), std::max(at[0], at[1]));
   if (Q.size() < 3) return out;
   detail::calipers(
       Q,
-      [&](std::size_t a, std::size_t b) {
+      [&out, &at = at](std::size_t a, std::size_t b) {  // bindings captured by name, as clang 14 needs
         if (a != b) out.emplace_back(std::min(at[a], at[b]), std::max(at[a], at[b]));
       },
       [](std::size_t, std::size_t) {});
@@ -165,11 +165,11 @@ std::optional<Width> width(std::span<const Point> P) {
       throw BadInput("width: the points must be proper points on one side of T2");
   const std::vector<std::size_t> hull = convex_hull<K>(P);
   if (hull.size() < 3) return std::nullopt;
-  auto [Q, at] = detail::front_copy(P, hull);
+  const auto [Q, at] = detail::front_copy(P, hull);
   const std::size_t h = Q.size();
   std::optional<std::pair<std::size_t, std::size_t>> best;  // (edge, vertex) in Q
   detail::calipers(Q, [](std::size_t, std::size_t) {},
-                   [&](std::size_t e, std::size_t v) {
+                   [&best, &Q = Q, h](std::size_t e, std::size_t v) {
                      if (!best || detail::compare_line_distances(Q[e], Q[(e + 1) % h], Q[v], Q[best->first],
                                                                  Q[(best->first + 1) % h], Q[best->second]) < 0)
                        best = std::make_pair(e, v);

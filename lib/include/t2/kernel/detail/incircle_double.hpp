@@ -93,10 +93,14 @@ inline constexpr double kInCircle3Bound = 360 * kUnitRoundoff * (1 + 0x1p-40);
 template <class N>
 auto lifted_det4_any(const N& aw, const N& ax, const N& ay, const N& bw, const N& bx, const N& by, const N& cw,
                      const N& cx, const N& cy, const N& dw, const N& dx, const N& dy) {
-  const auto r00 = ax * aw, r01 = ay * aw, r02 = ax * ax + ay * ay, r03 = aw * aw;
-  const auto r10 = bx * bw, r11 = by * bw, r12 = bx * bx + by * by, r13 = bw * bw;
-  const auto r20 = cx * cw, r21 = cy * cw, r22 = cx * cx + cy * cy, r23 = cw * cw;
-  const auto r30 = dx * dw, r31 = dy * dw, r32 = dx * dx + dy * dy, r33 = dw * dw;
+  const auto r00 = ax * aw, r01 = ay * aw, r03 = aw * aw;
+  const auto r02 = ax * ax + ay * ay;
+  const auto r10 = bx * bw, r11 = by * bw, r13 = bw * bw;
+  const auto r12 = bx * bx + by * by;
+  const auto r20 = cx * cw, r21 = cy * cw, r23 = cw * cw;
+  const auto r22 = cx * cx + cy * cy;
+  const auto r30 = dx * dw, r31 = dy * dw, r33 = dw * dw;
+  const auto r32 = dx * dx + dy * dy;
   return ((((((r00 * r11 - r01 * r10) * (r22 * r33 - r23 * r32)) - ((r00 * r12 - r02 * r10) * (r21 * r33 - r23 * r31))) +
             ((r00 * r13 - r03 * r10) * (r21 * r32 - r22 * r31))) +
            ((r01 * r12 - r02 * r11) * (r20 * r33 - r23 * r30))) -
