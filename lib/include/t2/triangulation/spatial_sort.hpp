@@ -24,6 +24,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <span>
 #include <vector>
@@ -82,8 +83,11 @@ inline std::vector<std::uint32_t> spatial_order(std::span<const Point> points, s
   for (std::size_t k = 0; k < n; ++k) {
     const Point& p = points[k];
     const double s = p.w() != 0 ? p.w() : std::max(std::fabs(p.x()), std::fabs(p.y()));
-    xy[2 * k] = static_cast<float>(p.x() / s);
-    xy[2 * k + 1] = static_cast<float>(p.y() / s);
+    // Clamped into float's range: a double beyond it has no float (the cast would be undefined,
+    // and an infinity here made the keys below NaN); such points only share the extreme keys.
+    constexpr double big = std::numeric_limits<float>::max();
+    xy[2 * k] = static_cast<float>(std::clamp(p.x() / s, -big, big));
+    xy[2 * k + 1] = static_cast<float>(std::clamp(p.y() / s, -big, big));
     for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], xy[2 * k + c]), hi[c] = std::max(hi[c], xy[2 * k + c]);
   }
   double scale[2];
