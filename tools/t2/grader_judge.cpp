@@ -107,7 +107,7 @@ void judge_one(TestResult& t, const fs::path& checker, const fs::path& driver, c
   d.tree_cpu_seconds = cpu_s;  // and for all its processes together (forked workers included)
   d.limits.wall_seconds = wall;
   d.limits.memory_bytes = static_cast<std::uint64_t>(memory_mb) << 20;
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(T2_SANITIZE)
   d.limits.memory_bytes = 0;  // the sanitizers' shadow memory needs terabytes of address space
 #endif
   d.limits.file_bytes = 16u << 20;
