@@ -208,14 +208,20 @@ void trapezoid_sizes() {
   std::uniform_real_distribution<double> d(0, 1);
   for (const int n : {1000, 10000, 100000}) {
     std::vector<Point> P;
-    for (int i = 0; i < n; ++i) P.push_back(Point::cartesian(d(rng), d(rng)));
+    for (int i = 0; i < n; ++i) {
+      const double x = d(rng), y = d(rng);  // in this order, on every compiler
+      P.push_back(Point::cartesian(x, y));
+    }
     std::vector<std::vector<Index>> F;
     for (const auto& t : t2::delaunay(P).finite_triangles()) F.push_back({t[0], t[1], t[2]});
     const Subdivision S(P, F);
     const t2::TrapezoidLocator L(S);
     const t2::TrapezoidMap& M = *L.chart(t2::TrapezoidLocator::front);
     double steps = 0, H = 0;
-    for (int i = 0; i < 10000; ++i) steps += double(M.locate(Point::cartesian(d(rng), d(rng))).steps);
+    for (int i = 0; i < 10000; ++i) {
+      const double x = d(rng), y = d(rng);
+      steps += double(M.locate(Point::cartesian(x, y)).steps);
+    }
     for (std::size_t i = 1; i <= M.segments(); ++i) H += 1.0 / double(i);
     std::cout << "n = " << M.segments() << " segments: " << double(M.nodes()) / double(M.segments())
               << " nodes per segment, " << double(live(M)) / double(M.segments())

@@ -119,7 +119,10 @@ void figures(const std::filesystem::path& dir) {
     std::mt19937_64 rng(1515);
     std::uniform_int_distribution<int> c(-24, 24);
     std::vector<Point> K;
-    for (int k = 0; k < 60; ++k) K.push_back(Point::cartesian(c(rng) / 8.0, c(rng) / 8.0));
+    for (int k = 0; k < 60; ++k) {
+      const double x = c(rng) / 8.0, y = c(rng) / 8.0;  // in this order, on every compiler
+      K.push_back(Point::cartesian(x, y));
+    }
     const t2::KdTree T(K);
     const IsoRect q(Point::cartesian(-0.5, -1.25), T1(1, 2.25), T1(1, 2));
     const t2::ExactIsoRect eq(t2::to_exact(q.a()), t2::to_exact(q.dx()), t2::to_exact(q.dy()));

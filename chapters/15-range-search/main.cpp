@@ -71,7 +71,8 @@ void queries() {
   const auto R = t2::gen::points(t2::gen::Kind::both_sides, o);
   const t2::LocusCounter M(R);
   for (int q = 0; q < 1000; ++q) {
-    const IsoRect r(Point(q % 2 ? 1 : -1, c(rng), c(rng)), T1(1, c(rng)), T1(q % 7 ? 1 : 0, c(rng)));
+    const double x = c(rng), y = c(rng), a = c(rng), b = c(rng);  // drawn in this order
+    const IsoRect r(Point(q % 2 ? 1 : -1, x, y), T1(1, a), T1(q % 7 ? 1 : 0, b));
     agree += M.count(r) == brute(R, r);
   }
   std::cout << "1000 random rectangles over 400 points on both sides: the counts agree on " << agree
@@ -99,7 +100,10 @@ void trees() {
                               t2::ExactT1(1, 1));
   std::vector<Point> P;
   for (std::size_t n = 1024; n <= 262144; n *= 4) {
-    while (P.size() < n) P.push_back(Point::cartesian(u(rng), u(rng)));
+    while (P.size() < n) {
+      const double x = u(rng), y = u(rng);
+      P.push_back(Point::cartesian(x, y));
+    }
     const t2::KdTree T(P);
     std::cout << "n = " << n << ": " << T.visits(line) << " nodes entered, sqrt(n) = "
               << std::sqrt(double(n)) << "\n";
@@ -114,8 +118,9 @@ void trees() {
   std::uniform_real_distribution<double> c(-1, 1);
   int agree = 0;
   for (int q = 0; q < 1000; ++q) {
-    const t2::ExactIsoRect r(t2::to_exact(Point(q % 2 ? 1 : -1, c(rng), c(rng))),
-                             t2::to_exact(T1(1, c(rng))), t2::to_exact(T1(q % 7 ? 1 : 0, c(rng))));
+    const double x = c(rng), y = c(rng), a = c(rng), b = c(rng);  // drawn in this order
+    const t2::ExactIsoRect r(t2::to_exact(Point(q % 2 ? 1 : -1, x, y)), t2::to_exact(T1(1, a)),
+                             t2::to_exact(T1(q % 7 ? 1 : 0, b)));
     const auto want = inside(R, r);
     agree += K.report(r) == want && G.report(r) == want;
   }

@@ -40,7 +40,10 @@ std::vector<t2::Point> locate_queries(std::span<const t2::Point> points, bool so
   std::uniform_real_distribution<double> X(x0, x1), Y(y0, y1);
   std::vector<t2::Point> Q;
   Q.reserve(points.size());
-  for (std::size_t k = 0; k < points.size(); ++k) Q.push_back(t2::Point::cartesian(X(rng), Y(rng)));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double x = X(rng), y = Y(rng);  // in this order (a call's arguments have none)
+    Q.push_back(t2::Point::cartesian(x, y));
+  }
   if (sorted) {
     const auto order = t2::spatial_order(Q);
     std::vector<t2::Point> S;
