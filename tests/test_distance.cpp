@@ -196,9 +196,10 @@ void sweep_rule(std::uint64_t seed, long range) {
     if (dx == 0 && dy == 0) continue;
     const P c = make<P>(0, dx, dy);
     const int sd = s(rng) ? 1 : -1;
-    // Drawn in a fixed order (a call's arguments have none: GCC and clang drew different points).
-    const std::array<long, 6> d{sd * w(rng), u(rng), u(rng), sd * w(rng), u(rng), u(rng)};
-    const P a = make<P>(d[0], d[1], d[2]), b = make<P>(d[3], d[4], d[5]);
+    // Drawn in a fixed order, y, x, w (a call's arguments have none: GCC drew them so, clang
+    // the other way, and its points had no tie).
+    const std::array<long, 6> d{u(rng), u(rng), sd * w(rng), u(rng), u(rng), sd * w(rng)};
+    const P a = make<P>(d[2], d[1], d[0]), b = make<P>(d[5], d[4], d[3]);
     const Sign front = sweep_oracle(to_exact_any(a), to_exact_any(b), to_exact_any(c), 1);
     const Sign back = sweep_oracle(to_exact_any(a), to_exact_any(b), to_exact_any(c), -1);
     ASSERT_EQ(front, back);  // on one side, the two ways of reaching c agree
