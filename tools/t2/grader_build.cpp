@@ -317,8 +317,9 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
   // The allowed headers are read first, before any line of the submission: no macro of its own
   // can rename what they define (#define antipode x before #include), and its own #include of
   // them is then empty (#pragma once). What they define keeps its name for the symbol check.
-  // They are one -include, the first, which GCC takes from its precompiled header (1.2 s instead
-  // of 1.8 s for 12b's reference): the same declarations, parsed once per allow-list.
+  // They are one -include, the first, which GCC takes from its precompiled header (12b's
+  // reference: 0.67 s instead of 1.06 s, the same object code): parsed once per allow-list.
+  // -MD: the files it read as text, to tell whether it did (took_precompiled).
   std::vector<std::string> compile = {"g++"};
   compile.insert(compile.end(), student_flags().begin(), student_flags().end());
   compile.insert(compile.end(), {"-I", "/t2/include", "-I", "/src"});
