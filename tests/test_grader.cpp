@@ -48,10 +48,20 @@ bool plain_verdict(const std::string& s) {
          s.rfind("not run", 0) == 0;
 }
 
+// A file of the grader cache as it is: its content, or for a large one (a precompiled header,
+// ~55 MB) its inode, size and times (a write, a truncation or a touch changes the change time).
+std::string fingerprint(const fs::path& p) {
+  struct stat st{};
+  if (::lstat(p.c_str(), &st) != 0) return "gone";
+  if (st.st_size < (1 << 20)) return slurp(p);
+  return std::to_string(st.st_ino) + " " + std::to_string(st.st_size) + " " + std::to_string(st.st_mtim.tv_sec) + "." +
+         std::to_string(st.st_mtim.tv_nsec) + " " + std::to_string(st.st_ctim.tv_sec) + "." + std::to_string(st.st_ctim.tv_nsec);
+}
+
 // Everything on the host a submission must leave alone.
 struct HostState {
   std::set<std::string> files;               // under /usr/local, the top of /usr/bin and /
-  std::map<std::string, std::string> cache;  // the grader cache, by content
+  std::map<std::string, std::string> cache;  // the grader cache, by fingerprint
   static HostState now() {
     HostState h;
     std::error_code ec;
@@ -60,7 +70,7 @@ struct HostState {
     for (const char* d : {"/usr/bin", "/"})
       for (const auto& e : fs::directory_iterator(d, ec)) h.files.insert(e.path().string());
     for (const auto& e : fs::directory_iterator(fs::path(T2_BINARY_DIR) / "grader-cache", ec))
-      if (e.path().string().find(".tmp") == std::string::npos) h.cache[e.path().string()] = slurp(e.path());
+      if (e.path().string().find(".tmp") == std::string::npos) h.cache[e.path().string()] = fingerprint(e.path());
     return h;
   }
 };

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "grader_cache.hpp"
 #include "process.hpp"
 
 #ifndef T2_SOURCE_DIR
@@ -57,20 +58,9 @@ std::optional<fs::path> system_entry(const std::string& header) {
   return base / first;
 }
 
-}  // namespace
-
-IncludeView include_view(const Exercise& ex, const fs::path& work) {
-  IncludeView v;
-  v.tree = work / "include";
-  v.headers = header_closure(library_include_dir(), ex.allowed);
-  for (const auto& h : v.headers) {
-    fs::create_directories((v.tree / h).parent_path());
-    fs::copy_file(library_include_dir() / h, v.tree / h, fs::copy_options::overwrite_existing);
-  }
-  fs::permissions(work / "include", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                        fs::perms::others_read | fs::perms::others_exec);
-  // The system headers: whatever the compiler reads for the whole standard library and the
-  // allowed headers (the trusted compiler, outside the sandbox, on a file of ours).
+// The entries of /usr/include the compiler reads for the whole standard library and the allowed
+// headers (the trusted compiler, outside the sandbox, on a file of ours), one a line.
+std::string system_entries(const Exercise& ex, const fs::path& tree, const fs::path& work) {
   const fs::path probe = work / "allowed-headers.cpp";
   {
     std::ofstream o(probe);
@@ -78,7 +68,7 @@ IncludeView include_view(const Exercise& ex, const fs::path& work) {
     for (const auto& h : ex.allowed) o << "#include <" << h << ">\n";
   }
   t2proc::Spec s;
-  s.argv = {"g++", "-std=c++20", "-M", "-I", v.tree.string(), probe.string()};
+  s.argv = {"g++", "-std=c++20", "-M", "-I", tree.string(), probe.string()};
   s.limits.wall_seconds = 120;
   s.limits.output_bytes = 4u << 20;
   const t2proc::Result r = t2proc::run(s);
@@ -87,7 +77,39 @@ IncludeView include_view(const Exercise& ex, const fs::path& work) {
   std::istringstream deps(r.out);
   for (std::string w; deps >> w;)
     if (const auto e = system_entry(w)) entries.insert(*e);
-  v.system.assign(entries.begin(), entries.end());
+  std::string lines;
+  for (const auto& e : entries) lines += e.string() + "\n";
+  return lines;
+}
+
+}  // namespace
+
+IncludeView include_view(const Exercise& ex, const fs::path& work, std::uint64_t toolchain) {
+  IncludeView v;
+  v.tree = work / "include";
+  v.headers = header_closure(library_include_dir(), ex.allowed);
+  for (const auto& h : v.headers) {
+    fs::create_directories((v.tree / h).parent_path());
+    fs::copy_file(library_include_dir() / h, v.tree / h, fs::copy_options::overwrite_existing);
+  }
+  if (!ex.allowed.empty()) {
+    // One header for the allowed ones, in the manifest's order, by the paths the compile sees:
+    // the first -include, which GCC may take from a precompiled header beside it.
+    std::ofstream o(v.tree / kAllowedHeader);
+    o << "// The headers this exercise allows, read before the submission (t2 grade).\n#pragma once\n";
+    for (const auto& h : ex.allowed) o << "#include \"/t2/include/" << h << "\"\n";
+  }
+  fs::permissions(work / "include", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                        fs::perms::others_read | fs::perms::others_exec);
+  // The system headers, cached per toolchain and allow-list (the compiler's -M takes 0.12-0.2 s).
+  std::string key;
+  for (const auto& h : ex.allowed) key += h + "\n";
+  const fs::path list = cached(work, "system-headers.txt", fnv1a(key, toolchain),
+                               [&](const fs::path& tmp) { std::ofstream(tmp) << system_entries(ex, v.tree, work); });
+  std::istringstream entries(read_text(list));
+  for (std::string e; std::getline(entries, e);)
+    if (system_entry(e) == fs::path(e)) v.system.push_back(e);
+  if (v.system.empty()) throw GraderError("internal error: no system header in " + list.string());
   for (const char* d : {"/usr/include", "/usr/local/include"}) {
     std::error_code ec;
     if (fs::is_directory(d, ec) && !fs::is_symlink(d, ec)) v.masked.push_back(d);

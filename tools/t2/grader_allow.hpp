@@ -10,6 +10,7 @@
 //     (GMP's headers when an allowed header includes them; never Boost, CGAL or qhull).
 // What a folder does not hold, no macro, template or #include can reach.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@
 #include "grader_core.hpp"
 
 namespace t2grader {
+
+/// The header, at the top of the view, that includes the allowed headers in the manifest's order
+/// (absent when the manifest allows none): the compile's first -include, precompiled beside it.
+inline constexpr const char* kAllowedHeader = "t2-allowed.hpp";
 
 /// The headers a submission's compile sees.
 struct IncludeView {
@@ -33,8 +38,9 @@ fs::path library_include_dir();
 /// relative to `include_root` (sorted); throws GraderError naming a header that does not exist.
 std::vector<std::string> header_closure(const fs::path& include_root, const std::vector<std::string>& allowed);
 
-/// Builds the view of `ex` under `work` (the library headers copied, the system headers found
-/// by the compiler on the standard library and the allowed headers); throws GraderError.
-IncludeView include_view(const Exercise& ex, const fs::path& work);
+/// Builds the view of `ex` under `work` (the library headers copied, kAllowedHeader written, the
+/// system headers found by the compiler on the standard library and the allowed headers, cached
+/// per allow-list and `toolchain` key); throws GraderError.
+IncludeView include_view(const Exercise& ex, const fs::path& work, std::uint64_t toolchain);
 
 }  // namespace t2grader
