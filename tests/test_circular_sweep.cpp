@@ -5,6 +5,7 @@
 // Every reported point is certified with GMP integers: it lies on every segment it names.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -240,6 +241,72 @@ TEST(CircularSweep, StarFansAndOverlaps) {
   S.emplace_back(Point(2, 6, 2), Point(2, 6, 2));  // (3, 1) once more, scaled
   for (int k = 0; k < 5; ++k) S.emplace_back(Point(1, k, -1), Point(1, 4 - k, 5));  // through (2, 2)
   check(S);
+}
+
+// Pencils: segments through a few common points (inside them, or ending there; some through
+// two of the points), in front, behind, on Ω and on the initial half-line, among segments
+// crossing them elsewhere. The sweep schedules a crossing once for all the pieces through one
+// point (circular.cpp): a crossing taken for one already waiting, or a piece taken to pass
+// through the event, is a point missed or a segment wrongly listed, which brute force shows.
+TEST(CircularSweep, PencilsAmongOtherCrossings) {
+  std::mt19937_64 rng(1313);
+  std::uniform_int_distribution<int> small(-4, 4), dir(-2, 2), len(1, 3), kind(0, 9), k2(0, 2);
+  using H = std::array<double, 3>;  // homogeneous w, x, y
+  const auto comb = [](double s, const H& a, double t, const H& b) {
+    return H{s * a[0] + t * b[0], s * a[1] + t * b[1], s * a[2] + t * b[2]};
+  };
+  const auto independent = [](const H& a, const H& b) {
+    return a[1] * b[2] != a[2] * b[1] || a[2] * b[0] != a[0] * b[2] || a[0] * b[1] != a[1] * b[0];
+  };
+  for (int round = 0; round < 20 * testing::scale(); ++round) {
+    SCOPED_TRACE(round);
+    std::array<H, 3> centre;  // behind, on Ω, in front; on y = 0 every third round
+    for (int k = 0; k < 3; ++k)
+      do centre[k] = {double(k - 1), double(small(rng)), round % 3 == 0 ? 0.0 : double(small(rng))};
+      while (centre[k] == H{0, 0, 0});
+    std::vector<Segment> S;
+    const auto add = [&](const H& p, const H& q) {  // scaled by 1, 2 or 4
+      const double a = 1 << k2(rng), b = 1 << k2(rng);
+      const Point P(a * p[0], a * p[1], a * p[2]), Q(b * q[0], b * q[1], b * q[2]);
+      if (!(P == antipode(Q))) S.emplace_back(P, Q);
+    };
+    while (S.size() < 60) {
+      const H& c = centre[S.size() % 3];
+      const H& c2 = centre[(S.size() + 1) % 3];
+      const H d{double(dir(rng)), double(small(rng)), double(small(rng))};
+      if (!independent(c, d)) continue;
+      const double t = len(rng), u = len(rng);
+      const int r = kind(rng);
+      if (r < 4) add(comb(1, c, -t, d), comb(1, c, u, d));  // c strictly inside
+      else if (r == 4) add(c, comb(1, c, u, d));             // starts at c
+      else if (r == 5) add(comb(1, c, -t, d), c);            // ends at c
+      else if (r == 6 && independent(c, c2)) add(comb(2, c, -1, c2), comb(2, c2, -1, c));
+      else if (const H e{double(dir(rng)), double(small(rng)), double(small(rng))}; e != H{0, 0, 0})
+        add(d, e);  // anywhere
+    }
+    check(S);
+  }
+}
+
+TEST(CircularSweep, LargePencilsInFrontBehindAndOnOmega) {  // hundreds of pieces through one point
+  gen::Options o;
+  o.n = 400;
+  o.seed = 5;
+  const std::vector<Segment> P = gen::segments(gen::Kind::segments_through_point, o);
+  std::vector<Segment> S = P;
+  // The same segments mapped exactly (a linear map keeps segments): through ¬[1,0,0] behind,
+  // [0,0,1] on Ω and [0,1,0] on Ω and on the initial half-line (cut there).
+  const auto map = [&](std::size_t from, std::size_t to, auto f) {
+    for (std::size_t k = from; k < to; ++k) S.emplace_back(f(P[k].source()), f(P[k].target()));
+  };
+  map(0, 150, [](const Point& p) { return Point(-p.w(), -p.y(), -p.x()); });
+  map(150, 300, [](const Point& p) { return Point(p.y(), p.x(), p.w()); });
+  map(300, 400, [](const Point& p) { return Point(p.x(), p.w(), p.y()); });
+  check(S);
+  const auto out = intersections_circular(S);
+  std::size_t big = 0;
+  for (const auto& ip : out) big += ip.segments.size() >= 100;
+  EXPECT_EQ(big, 4u);
 }
 
 TEST(CircularSweep, TakesAnyCentreItNeedsOnLargerInput) {

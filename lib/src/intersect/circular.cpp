@@ -32,6 +32,20 @@
 // through them (those that start there, those that end there; a cut segment at both): they are
 // gathered by their exact point and judged once at the end, with every segment through them.
 //
+// **A point where many pieces cross** is scheduled once, not once per pair of neighbours (n
+// segments through one point made ~2n copies in the heap, and each comparison of two copies is
+// a predicate whose filter fails: about 22 s for n = 10⁵), as in sweep.cpp. Each piece remembers
+// one crossing waiting in the heap inside it (`Pending`: its number, and another piece through
+// it on another line). When neighbours a and b cross ahead and a has a pending crossing w,
+// their crossing is w exactly when it lies on the other piece's line (a's line meets that line
+// at ±w, and a piece, shorter than half a turn, holds only one of them): one orientation, and
+// b learns w. When a and b have the same pending crossing, or one is the other's other piece,
+// it is their crossing, with no predicate. The pending crossing of a piece in the status is
+// ahead of E or is E (then the piece goes on through E, and forgets it): so a piece whose
+// pending crossing has been taken out of the heap passes through E, as do the pieces being
+// put back at E (`Piece::through`), both without a predicate. Only the scheduling changes:
+// the events, the output and the trace are those of the sweep that pushes every pair.
+//
 // Traced (the overload with a hook; `t2 animate intersect-circular`), it tells what sweep.cpp
 // tells, its pieces named by their segments, and first the centre and the cut segments.
 #include <fmt/format.h>
@@ -43,6 +57,7 @@
 #include <stdexcept>
 
 #include "circular_centre.hpp"
+#include "circular_events.hpp"
 #include "t2/intersect/intersections.hpp"
 #include "t2/kernel/join_meet.hpp"
 #include "t2/kernel/lexicographic.hpp"
@@ -50,43 +65,7 @@
 #include "t2/trace/hook.hpp"
 
 namespace t2 {
-// Named: a unity build (test.sh) shares one translation unit between this file and the
-// other sweeps, whose helpers have the same names.
 namespace circular_sweep {
-
-/// An event point: an input point (p) or a meet (m, when p is null), the point itself, not its
-/// antipode.
-struct At {
-  const Point* p = nullptr;
-  JoinMeet<double> m{};
-};
-
-/// Where an event is in the turn (file comment).
-enum Rank : std::uint8_t { kStart, kUpper, kHalf, kLower, kEnd };
-
-/// A piece of a segment, from its first point to its last in the turn, on the segment's line
-/// la ∨ lb, oriented with o on its left.
-struct Piece {
-  const Point *la = nullptr, *lb = nullptr;
-  At start, end;
-  Rank start_rank = kStart, end_rank = kEnd;
-  std::uint32_t segment = 0;
-};
-
-/// A crossing of pieces i < j, or (crossing false) the endpoint group g.
-struct Event {
-  At at;
-  Rank rank = kStart;
-  bool crossing = false;
-  std::uint32_t i = 0, j = 0;
-};
-
-/// Endpoint events at one point: the pieces starting there and the one-point segments there.
-struct Group {
-  Event event;
-  std::vector<std::uint32_t> starts, points;
-  bool input = false;  ///< the point is an input endpoint (not only a cut point)
-};
 
 struct Probe {};  ///< "the current event" for std::set's transparent search
 
@@ -144,6 +123,8 @@ class Circular {
   void make_groups();
   template <class H>
   void check(std::size_t a, std::size_t b, H& tr);
+  bool queued(std::size_t a, std::size_t b) const;
+  void schedule(Event& e, std::size_t a, std::size_t b);
   template <class H>
   void handle(const Event& e, const Group* g, std::vector<IntersectionPoint>& out, H& tr);
   template <class H>
@@ -156,6 +137,7 @@ class Circular {
   std::vector<Piece> pieces_;
   std::vector<Group> groups_;
   std::vector<Event> heap_;
+  std::vector<std::uint8_t> taken_;      // per crossing id: 1 once taken out of the heap
   Event current_;
   Status status_;
   std::vector<Status::iterator> where_;
@@ -214,6 +196,8 @@ Sign Circular::compare(const Event& a, const Event& b) const {
 /// POSITIVE above, ZERO through it.
 Sign Circular::side_of_event(std::size_t k) const {
   const Piece& p = pieces_[k];
+  if (p.through || (p.pending.id != kNone && taken_[p.pending.id]))
+    return ZERO;  // known through it (file comment)
   if (current_.crossing && (k == current_.i || k == current_.j)) return ZERO;
   // o is on p's left: an event on the left is nearer o than p
   return side(*p.la, *p.lb, current_.at);
@@ -333,6 +317,7 @@ void Circular::check(std::size_t a, std::size_t b, H& tr) {
     tell(tr, trace::Event::neighbours, {p.segment, q.segment}, {}, s);
   };
   if (collinear(p.segment, q.segment)) return told(ZERO);  // overlaps: found at the ends
+  if (queued(a, b)) return told(POSITIVE);  // their crossing waits already (file comment)
   const bool p_first = compare(p.end, p.end_rank, q.end, q.end_rank) != POSITIVE;
   const bool swapped = p_first ? side(*q.la, *q.lb, p.end) == NEGATIVE
                                : side(*p.la, *p.lb, q.end) == POSITIVE;
@@ -346,13 +331,40 @@ void Circular::check(std::size_t a, std::size_t b, H& tr) {
           static_cast<std::uint32_t>(std::max(a, b))};
   e.rank = rank_of(e.at, false);
   const bool ahead = compare(e, current_) == POSITIVE;
-  if (ahead) {
-    heap_.push_back(e);
-    std::push_heap(heap_.begin(), heap_.end(), Later{this});
-  }
+  if (ahead) schedule(e, a, b);  // unless it waits already (file comment)
   told(ahead ? POSITIVE : NEGATIVE);
 }
 //< circular-check
+
+/// The crossing of neighbours a and b is known to wait in the heap, ahead: the same crossing
+/// is pending on both, or one's pending crossing has the other as its other piece.
+bool Circular::queued(std::size_t a, std::size_t b) const {
+  const Pending pa = pieces_[a].pending, pb = pieces_[b].pending;
+  return (pa.id != kNone && (pa.id == pb.id || pa.other == b)) || (pb.id != kNone && pb.other == a);
+}
+
+/// Pushes e, the crossing of a and b ahead, unless it lies on the other line of the crossing w
+/// pending on one of the two (whose line meets that line at ±w, and a piece holds only one of
+/// them): then it is w, and the second learns w.
+void Circular::schedule(Event& e, std::size_t a, std::size_t b) {
+  const auto ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
+  const auto waits = [&](std::uint32_t knows, std::uint32_t learns) {
+    const Pending w = pieces_[knows].pending;
+    if (w.id == kNone) return false;
+    const Piece& t = pieces_[w.other];
+    if (orient(*t.la, *t.lb, e.at.m) != ZERO) return false;
+    pieces_[learns].pending = {w.id, knows};
+    return true;
+  };
+  if (waits(ua, ub) || waits(ub, ua)) return;
+  if (taken_.size() >= kNone) throw std::length_error("circular sweep: too many crossings");
+  e.id = static_cast<std::uint32_t>(taken_.size());
+  taken_.push_back(0);
+  heap_.push_back(e);
+  std::push_heap(heap_.begin(), heap_.end(), Later{this});
+  pieces_[a].pending = {e.id, ub};
+  pieces_[b].pending = {e.id, ua};
+}
 
 /// Tells `tr` the status after the event e (its pieces as segments) and the pieces `going` on.
 template <class H>
@@ -410,11 +422,16 @@ void Circular::handle(const Event& e, const Group* g, std::vector<IntersectionPo
     tell_found(out.back(), tr);
   }
   for (std::size_t k : ending) status_.erase(where_[k]);
-  for (std::size_t k : going) status_.erase(where_[k]);
+  for (std::size_t k : going) {  // a crossing pending on it is e
+    status_.erase(where_[k]);
+    pieces_[k].pending = Pending{};
+  }
   // The pieces that go on past e, in their order just after it, each put just below `above`.
   if (g) going.insert(going.end(), g->starts.begin(), g->starts.end());
+  for (std::size_t k : going) pieces_[k].through = true;  // every key compared below
   std::sort(going.begin(), going.end(), [this](std::size_t a, std::size_t b) { return below(a, b); });
   for (std::size_t k : going) where_[k] = status_.insert(above, k);
+  for (std::size_t k : going) pieces_[k].through = false;
   tell_status(e, going, tr);
   if (going.empty()) {
     if (above != status_.begin() && above != status_.end()) check(*std::prev(above), *above, tr);
@@ -445,6 +462,7 @@ std::vector<IntersectionPoint> Circular::run(H& tr) {
         (heap_.empty() || compare(groups_[g].event, heap_.front()) != POSITIVE);
     const Event e = endpoint ? groups_[g].event : heap_.front();
     while (!heap_.empty() && compare(heap_.front(), e) == ZERO) {  // every copy of e
+      taken_[heap_.front().id] = 1;
       std::pop_heap(heap_.begin(), heap_.end(), Later{this});
       heap_.pop_back();
     }
