@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite (what CI runs): the default build (GCC) and an ASan+UBSan build (clang).
-# The sanitized tree is compiled by clang: its sanitizers are the same two, and it compiles that
-# tree in half of GCC's CPU time (933 s against about 1790 s on the 2-core machine), and the
-# project is kept compiling with both compilers.
+# The sanitized tree is compiled by clang: the same two sanitizers (clang's UBSan checks float
+# casts too), the tree built in 495 s instead of GCC's 895 s (fresh clones on the 2-core machine),
+# and the project kept compiling with both compilers.
 # Long randomized runs are behind a label: ctest --preset long, after `cmake --preset default`
 # and its build (that tree builds every test).
 # Each test is built and run in one tree (T2_TESTS, tests/CMakeLists.txt): the ASan tree runs the
