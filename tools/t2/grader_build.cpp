@@ -41,18 +41,13 @@ bool sanitized_tool() {
 
 // The compiler that links a program with the kernel archive: g++, but in a sanitized tool the
 // compiler that built it, whose sanitizer runtime matches the archive's instrumentation (clang's
-// code reports nothing through GCC's libasan). It links its runtimes in statically.
-struct Linker {
-  const char* cxx;
-  std::vector<std::string> sanitizer_flags;
-};
-const Linker& linker() {
+// code reports nothing through GCC's libasan).
+const char* linker() {
 #if defined(T2_SANITIZE) && defined(__clang__)
-  static const Linker l{"clang++", {"-fsanitize=address,undefined"}};
+  return "clang++";
 #else
-  static const Linker l{"g++", {"-fsanitize=address,undefined", "-static-libasan", "-static-libubsan"}};
+  return "g++";
 #endif
-  return l;
 }
 
 // Everything a trusted build depends on besides its own sources.
@@ -89,7 +84,10 @@ std::vector<std::string> link_libraries(bool with_gtest) {
 // into the sandbox, and with it libgmp.so for dlopen: issue 29, break 3).
 std::vector<std::string> driver_libraries() {
   std::vector<std::string> l;
-  if (sanitized_tool()) l = linker().sanitizer_flags;
+  if (sanitized_tool()) l = {"-fsanitize=address,undefined"};
+#if !defined(__clang__)
+  if (sanitized_tool()) l.insert(l.end(), {"-static-libasan", "-static-libubsan"});  // clang's default
+#endif
   l.insert(l.end(), {library_archive().string(), "-Wl,-Bstatic", "-lgmpxx", "-lgmp", "-Wl,-Bdynamic", "-lfmt", "-lpthread"});
   return l;
 }
@@ -150,7 +148,7 @@ fs::path trusted_program(const std::string& stem, const std::vector<fs::path>& o
   for (const auto& o : objs) key += o.filename().string();
   return cached(work, stem, fnv1a(key, toolchain_key()), [&](const fs::path& tmp) {
     t2proc::Spec s;
-    s.argv = {linker().cxx};
+    s.argv = {linker()};
     if (sanitized_tool()) s.argv.push_back("-fsanitize=address,undefined");
     for (const auto& o : objs) s.argv.push_back(o.string());
     const auto libs = link_libraries(gtest);
@@ -361,7 +359,7 @@ StudentBuild build_student(const Exercise& ex, const TrustedParts& t, const fs::
     b.messages = why;
     return b;
   }
-  std::vector<std::string> link = {linker().cxx, "-fno-lto", "-fno-use-linker-plugin", "/out/student.o"};
+  std::vector<std::string> link = {linker(), "-fno-lto", "-fno-use-linker-plugin", "/out/student.o"};
   link.insert(link.end(), objs.begin(), objs.end());
   for (auto l : driver_libraries()) link.push_back(l == library_archive().string() ? "/t2/lib/libt2_kernel.a" : l);
   link.insert(link.end(), {"-o", "/out/driver"});
