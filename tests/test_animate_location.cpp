@@ -10,7 +10,10 @@
 //   orient) and runs along the right axis; as many splits as the tree has inner nodes; as many
 //   node steps as KdTree::visits counts; each node's drawn cell holds the points the step names
 //   (exact point-in-polygon of T², closed);
-// - pages of 100 and 200 points weigh at most 1 MB (printed); bad input exits 2 or 3.
+// - trapezoid: the answers are the walk's; each insertion is an edge of the map, as many as the
+//   maps have segments; each query's node steps are the DAG nodes the untraced query visits;
+// - pages of 100 and 200 points weigh at most 1 MB (printed; the trapezoidal map's at 100, its
+//   200-point page taking half a minute to draw); bad input exits 2 or 3.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -28,10 +31,10 @@
 #include "t2/kernel/bbox.hpp"
 #include "t2/kernel/orient.hpp"
 #include "t2/kernel/point_in_polygon.hpp"
+#include "t2/location/trapezoid_locate.hpp"
 #include "t2/location/walk.hpp"
 #include "t2/range/kdtree.hpp"
 #include "t2/trace/recording.hpp"
-#include "t2/triangulation/delaunay.hpp"
 
 namespace t2::testing {
 namespace {
@@ -93,10 +96,8 @@ TEST(AnimateWalk, AnswersAreTheWalksAndTheOraclesAndEachStepIsAdjacent) {
   int crosses = 0, leaves = 0, outside = 0, vertices = 0;
   for (const auto& P : inputs()) {
     SCOPED_TRACE(fmt::format("{} points", P.size()));
-    const Triangulation D = delaunay(P);
-    std::vector<std::vector<Index>> F;
-    for (const auto& t : D.finite_triangles()) F.push_back({t[0], t[1], t[2]});
-    const Subdivision S(P, F);
+    const auto map = t2cli::algorithms::delaunay_map(P);  // the Delaunay triangles
+    const Subdivision& S = *map;
     const std::vector<Point> Q = t2cli::algorithms::animation_queries(P);
     ASSERT_EQ(Q.size(), 7u);
     EXPECT_LT(Q[5].w(), 0) << "a query on the back";
@@ -244,6 +245,48 @@ TEST(AnimateKdTree, AnswerIsTheTreesAndBruteForceAndEverySplitPassesThroughItsPo
 
 class AnimateLocation : public CliTest {};
 
+TEST(AnimateTrapezoid, AnswersAreTheWalksAndEachInsertionIsAnEdgeOfTheMap) {
+  for (const auto& P : inputs()) {
+    SCOPED_TRACE(fmt::format("{} points", P.size()));
+    const auto map = t2cli::algorithms::delaunay_map(P);  // the Delaunay triangles
+    const Subdivision& S = *map;
+    const Recording rec = record("trapezoid", P), walk = record("walk", P);
+    ASSERT_EQ(rec.steps().front().kind, "map");
+    ASSERT_EQ(rec.back().kind, "answer");
+    EXPECT_EQ(rec.back().text, walk.back().text) << "the same answers as the walk";
+    EXPECT_EQ(rec.back().triangles, walk.back().triangles);
+    const TrapezoidLocator L(S, 0x7A9E201D);  // the recorder's seed
+    std::size_t segments = 0;
+    for (const auto side : {TrapezoidLocator::front, TrapezoidLocator::back})
+      if (L.chart(side)) segments += L.chart(side)->segments();
+    const std::vector<Point> Q = t2cli::algorithms::animation_queries(P);
+    EXPECT_EQ(rec.at(Depth::lecture).size(), 1 + segments + 1 + Q.size() + 1)
+        << "the map, one step per insertion, the maps built, one per query, the answers";
+    std::size_t inserts = 0, nodes = 0, k = 0;
+    for (const Step& s : rec.steps()) {
+      if (s.kind == "insert") {
+        ++inserts;
+        ASSERT_EQ(s.edges.size(), 1u);
+        bool edge = false;
+        for (Index h = 0; h < S.half_edges(); ++h) edge = edge || (S.org(h) == s.edges[0][0] && S.dest(h) == s.edges[0][1]) ||
+                                                           (S.org(h) == s.edges[0][1] && S.dest(h) == s.edges[0][0]);
+        EXPECT_TRUE(edge) << s.text;
+      } else if (s.kind == "node") {
+        ++nodes;
+      } else if (s.kind == "located") {
+        ASSERT_LT(k, Q.size());
+        const Point& q = Q[k++];
+        const int side = q.w() > 0 ? 0 : q.w() < 0 ? 1 : -1;
+        const TrapezoidMap* M = side < 0 ? nullptr : L.chart(side == 0 ? TrapezoidLocator::front : TrapezoidLocator::back);
+        EXPECT_EQ(nodes, M ? M->locate(side == 0 ? q : antipode(q)).steps : 0u) << s.text;
+        nodes = 0;
+      }
+    }
+    EXPECT_EQ(inserts, segments);
+    EXPECT_EQ(k, Q.size());
+  }
+}
+
 TEST_F(AnimateLocation, PagesOfTwoHundredPointsWeighAtMostOneMegabyte) {
   for (const char* algo : {"walk", "kdtree"})
     for (int n : {200}) {  // the maximum (100 points: about half as heavy)
@@ -254,8 +297,13 @@ TEST_F(AnimateLocation, PagesOfTwoHundredPointsWeighAtMostOneMegabyte) {
       std::cout << "t2 animate " << algo << ", " << n << " points: " << bytes << " bytes\n";
       EXPECT_LE(bytes, 1000000u) << algo << " " << n;
     }
+  ASSERT_EQ(t2("gen uniform --n 100 --seed 5 -o p.t2").status, 0);
+  ASSERT_EQ(t2("animate trapezoid p.t2 -o page.html").status, 0);
+  std::cout << "t2 animate trapezoid, 100 points: " << fs::file_size(dir_ / "page.html") << " bytes\n";
+  EXPECT_LE(fs::file_size(dir_ / "page.html"), 1000000u);
   ASSERT_EQ(t2("gen both-sides --n 60 --seed 2 -o b.t2").status, 0);
-  for (const char* algo : {"walk", "kdtree"}) EXPECT_EQ(t2(fmt::format("animate {} b.t2 -o b.html", algo)).status, 0);
+  for (const char* algo : {"walk", "kdtree", "trapezoid"})
+    EXPECT_EQ(t2(fmt::format("animate {} b.t2 -o b.html", algo)).status, 0);
 }
 
 TEST_F(AnimateLocation, BadAndUndefinedInputExitWithTheFileNamed) {
@@ -265,12 +313,15 @@ TEST_F(AnimateLocation, BadAndUndefinedInputExitWithTheFileNamed) {
   EXPECT_EQ(r.status, 3);
   EXPECT_TRUE(has(r.err, "line.t2")) << r.err;
   EXPECT_TRUE(has(r.err, "no triangle")) << r.err;
+  r = t2("animate trapezoid line.t2 -o out.html");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_TRUE(has(r.err, "line.t2")) << r.err;
   write("omega.t2", "0 1 0\n0 1 1\n");  // no point off Omega: no window
   r = t2("animate kdtree omega.t2 -o out.html");
   EXPECT_EQ(r.status, 3);
   EXPECT_TRUE(has(r.err, "omega.t2")) << r.err;
   write("bad.t2", "0 0\n1 x\n");
-  for (const char* algo : {"walk", "kdtree"}) {
+  for (const char* algo : {"walk", "kdtree", "trapezoid"}) {
     r = t2(fmt::format("animate {} bad.t2 -o out.html", algo));
     EXPECT_EQ(r.status, 2);
     EXPECT_TRUE(has(r.err, "bad.t2:2")) << r.err;

@@ -2,8 +2,9 @@
 // built on it (location/trapezoid_locate.hpp), against the brute-force oracle (every face tested
 // with point_in_polygon.hpp's exact locate) and the walk: Delaunay maps, grids with vertical
 // edges and shared x-coordinates, maps on the back, on both sides, a face around the whole
-// sphere, maps crossing Ω (the walk answers), queries on vertices, edges, Ω and the back; and
-// the map's own certificates (neighbour links, the trapezoid of each query, size and depth).
+// sphere, maps crossing Ω (the walk answers), queries on vertices, edges, Ω and the back; the
+// map's own certificates (neighbour links, the trapezoid of each query, size and depth); and its
+// trace (trace/hook.hpp) against the map it builds and the predicates it reports.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "t2/kernel/orient.hpp"
 #include "t2/location/trapezoid_locate.hpp"
 #include "t2/location/walk.hpp"
+#include "t2/trace/hook.hpp"
 #include "t2/triangulation/delaunay.hpp"
 
 namespace {
@@ -82,13 +84,16 @@ std::vector<Point> queries(const Subdivision& S, std::mt19937_64& rng, int rando
     Q.emplace_back(a.w() + b.w(), a.x() + b.x(), a.y() + b.y());
   }
   std::uniform_int_distribution<int> c(-r, r), w(-2, 2);
-  for (int k = 0; k < random; ++k) {
-    const int s = w(rng);
-    if (s == 0) Q.emplace_back(0, c(rng) | 1, c(rng));
-    else Q.emplace_back(s, s * c(rng), s * c(rng));  // the grid points of both sides
+  for (int k = 0; k < random; ++k) {  // draws named: a call's arguments have no order
+    const int s = w(rng), x = c(rng), y = c(rng);
+    if (s == 0) Q.emplace_back(0, x | 1, y);
+    else Q.emplace_back(s, s * x, s * y);  // the grid points of both sides
   }
   std::uniform_real_distribution<double> d(-r, r);
-  for (int k = 0; k < random; ++k) Q.push_back(Point::cartesian(d(rng), d(rng)));
+  for (int k = 0; k < random; ++k) {
+    const double x = d(rng), y = d(rng);
+    Q.push_back(Point::cartesian(x, y));
+  }
   return Q;
 }
 
@@ -279,13 +284,117 @@ TEST(TrapezoidMap, SizeAndDepthAreWithinTheBounds) {
     std::size_t longest = 0;
     const int k = 2000;
     for (int i = 0; i < k; ++i) {
-      const std::size_t s = M.locate(Point::cartesian(d(rng), d(rng))).steps;
+      const double x = d(rng), y = d(rng);  // in this order (a call's arguments have none)
+      const std::size_t s = M.locate(Point::cartesian(x, y)).steps;
       steps += double(s), longest = std::max(longest, s);
     }
     EXPECT_LE(steps / k, 1 + 12 * H);
     EXPECT_LE(longest, M.depth());  // depth() is the longest path of all
     RecordProperty("nodes_per_segment_" + std::to_string(n), std::to_string(double(M.nodes()) / m));
     RecordProperty("depth_" + std::to_string(n), std::to_string(M.depth()));
+  }
+}
+
+// The traced construction builds the same map, and tells each insertion once: the segment, left
+// to right; the trapezoids it crosses, which end destroyed; and the new ones, numbered on from
+// the last insertion's. The traced query gives the same answer, one report per node it visits,
+// each with the sign of the predicate the node asks, and a leaf exactly when it ends in one.
+TEST(TrapezoidMap, TheTraceIsWhatTheMapDoes) {
+  namespace tr = t2::trace;
+  std::mt19937_64 rng(11);
+  for (int round = 0; round < 3; ++round) {
+    std::vector<Point> P;
+    Faces F;
+    grid(rng, 3 + 2 * round, -round, 1, P, F);  // vertical edges: ties in x
+    const Subdivision S(P, F);
+    std::vector<std::pair<Index, Index>> seg;
+    for (Index h = 0; h < S.half_edges(); ++h)
+      if (S.twin(h) == Subdivision::none || S.twin(h) > h) seg.push_back({S.org(h), S.dest(h)});
+    const std::uint64_t seed = rng();
+    std::vector<tr::Report> heard;
+    std::vector<std::vector<Index>> crossed;
+    const TrapezoidMap M(S.points(), seg, seed, [&](const tr::Report& r) {
+      heard.push_back(r);
+      crossed.emplace_back(r.face_list.begin(), r.face_list.end());
+    });
+    const TrapezoidMap U(S.points(), seg, seed);
+    ASSERT_EQ(M.trapezoids().size(), U.trapezoids().size());
+    EXPECT_EQ(M.nodes(), U.nodes());
+    ASSERT_EQ(heard.size(), seg.size());
+    std::set<std::pair<std::size_t, std::size_t>> told;
+    std::uint32_t next = 1;  // trapezoid 0 is the first, the whole chart
+    for (std::size_t k = 0; k < heard.size(); ++k) {
+      const tr::Report& r = heard[k];
+      EXPECT_EQ(r.event, tr::Event::trapezoid_split);
+      EXPECT_EQ(r.trapezoids, &M);
+      EXPECT_EQ(t2::compare_xy(P[r.at[0]], P[r.at[1]]), t2::NEGATIVE);
+      told.insert({r.at[0], r.at[1]});
+      EXPECT_EQ(r.faces[0], next);
+      EXPECT_GT(r.faces[1], r.faces[0] + 1) << "at least the two trapezoids over and under it";
+      next = r.faces[1];
+      ASSERT_FALSE(crossed[k].empty());
+      for (const Index t : crossed[k]) {
+        EXPECT_LT(t, r.faces[0]);
+        EXPECT_EQ(M.trapezoids()[t].node, TrapezoidMap::none) << "a crossed trapezoid is destroyed";
+      }
+    }
+    EXPECT_EQ(next, M.trapezoids().size());
+    for (const auto& [a, b] : seg) EXPECT_TRUE(told.count(std::minmax<std::size_t>(a, b)) || told.count({b, a}));
+    std::uniform_int_distribution<int> c(-2 * round - 2, 2 * round + 8);
+    for (int i = 0; i < 300; ++i) {
+      const int x = c(rng), y = c(rng);
+      const Point q = i % 3 ? Point::cartesian(x, y) : Point::cartesian(x + 0.5, y);  // vertices, edges
+      std::vector<tr::Report> path;
+      const TrapezoidMap::Hit h = M.locate(q, [&](const tr::Report& r) { path.push_back(r); });
+      const TrapezoidMap::Hit u = U.locate(q);
+      ASSERT_EQ(int(h.kind), int(u.kind));
+      EXPECT_EQ(h.id, u.id);
+      ASSERT_EQ(path.size(), h.steps);
+      for (const tr::Report& r : path) {
+        if (r.event == tr::Event::dag_x) EXPECT_EQ(r.sign, t2::compare_xy(q, P[r.at[0]]));
+        if (r.event == tr::Event::dag_y) EXPECT_EQ(r.sign, t2::orient(P[r.at[0]], P[r.at[1]], q));
+      }
+      const bool leaf = path.back().event == tr::Event::dag_leaf;
+      EXPECT_EQ(leaf, h.kind == TrapezoidMap::Hit::Kind::trapezoid);
+      if (leaf) EXPECT_EQ(path.back().faces[0], h.id);
+    }
+  }
+}
+
+// On the back, the locator's trace names the subdivision's vertices: `input_of` maps each point
+// of the back map to the vertex whose antipode it is, and the reports' points are those vertices.
+TEST(TrapezoidLocator, TheTraceNamesTheVerticesOfTheMapOnEachSide) {
+  namespace tr = t2::trace;
+  std::mt19937_64 rng(12);
+  const Subdivision D = delaunay_map(rng, 25, 10);
+  std::vector<Point> P = D.points();
+  Faces F;
+  for (Index f = 0; f < D.faces(); ++f) F.push_back({D.org(D.first(f)), D.org(D.first(f) + 1), D.org(D.first(f) + 2)});
+  antipodes(P, F);  // the same map on the back too: two closed charts
+  const Subdivision S(P, F);
+  std::size_t splits[2] = {0, 0};
+  const t2::TrapezoidLocator L(S, 5, [&](const tr::Report& r) {
+    ASSERT_EQ(r.event, tr::Event::trapezoid_split);
+    const bool back = S.points()[r.at[0]].w() < 0;
+    ++splits[back];
+    EXPECT_EQ(S.points()[r.at[1]].w() < 0, back);
+    for (std::size_t k = 0; k < r.input_of.size(); ++k) {
+      const Point& v = S.points()[r.input_of[k]];
+      EXPECT_EQ(r.trapezoids->point(Index(k)), back ? t2::antipode(v) : v);
+    }
+  });
+  ASSERT_NE(L.chart(t2::TrapezoidLocator::front), nullptr);
+  ASSERT_NE(L.chart(t2::TrapezoidLocator::back), nullptr);
+  EXPECT_EQ(splits[0], L.chart(t2::TrapezoidLocator::front)->segments());
+  EXPECT_EQ(splits[1], L.chart(t2::TrapezoidLocator::back)->segments());
+  for (const Point& q : queries(S, rng, 100, 12)) {
+    std::size_t nodes = 0;
+    const Location l = L.locate(q, [&](const tr::Report& r) {
+      if (r.event == tr::Event::dag_x) EXPECT_TRUE(S.points()[r.at[0]].w() != 0);
+      nodes += r.event == tr::Event::dag_x || r.event == tr::Event::dag_y || r.event == tr::Event::dag_leaf;
+    });
+    EXPECT_EQ(l, L.locate(q));
+    if (q.w() != 0) EXPECT_GT(nodes, 0u) << t2::to_string(q);
   }
 }
 

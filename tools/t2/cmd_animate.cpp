@@ -50,7 +50,9 @@ Action setup(Arguments& app) {
       "\nWhat the queries are, when the scene has only points: walk locates seven queries in the\n"
       "Delaunay triangulation of the points, each walk from the same vertex: q0 to q3 drawn\n"
       "uniformly in the points' bounding box (a fixed seed), q4 the middle point of the file,\n"
-      "q5 the antipode of q0 (on the back) and q6 = [0, 1, 0] on Omega; kdtree builds the tree of\n"
+      "q5 the antipode of q0 (on the back) and q6 = [0, 1, 0] on Omega; trapezoid builds the\n"
+      "trapezoidal map of each side of that triangulation, one edge a step (the DAG's size and\n"
+      "depth beside it), then locates the same queries, one DAG node a step; kdtree builds the tree of\n"
       "the points and reports those in one window, the middle half of the bounding box of the\n"
       "front points (of the back points when none is in front).");
   std::vector<std::string> names;
@@ -68,8 +70,8 @@ Action setup(Arguments& app) {
       "Exit status: 0 done; 2 bad usage or bad input (file:line: what is wrong; more than 200\n"
       "points or 100 segments; delaunay or sec given points off the front side); 3 undefined:\n"
       "the points have no hull (no open hemisphere holds them), or no triangulation of T2\n"
-      "(t2 triangulate), or intersect (Bentley-Ottmann) was given a segment not in front; walk:\n"
-      "no triangle to locate in; kdtree: every point on Omega.");
+      "(t2 triangulate), or intersect (Bentley-Ottmann) was given a segment not in front; walk,\n"
+      "trapezoid: no triangle to locate in; kdtree: every point on Omega.");
   return [o] { return animate(*o); };
 }
 

@@ -13,15 +13,31 @@ using Index = Subdivision::Index;
 namespace {
 // The side of p: 0 front, 1 back, -1 on Ω.
 int side_of(const Point& p) { return p.w() > 0 ? 0 : p.w() < 0 ? 1 : -1; }
+
+// A hook that hears a map's reports as reports about the vertices of S (a chart's `vertex`).
+trace::AnyHook about_vertices(const std::vector<Index>& vertex, const trace::AnyHook& hook) {
+  return [&vertex, &hook](const trace::Report& r) {
+    trace::Report t = r;
+    for (auto& i : t.at)
+      if (i != trace::Report::none) i = vertex[i];
+    t.input_of = vertex;
+    hook(t);
+  };
+}
 }  // namespace
 
-TrapezoidLocator::TrapezoidLocator(const Subdivision& S, std::uint64_t seed) : S_(S) {
-  build(front, seed);
-  build(back, seed + 1);
+TrapezoidLocator::TrapezoidLocator(const Subdivision& S, std::uint64_t seed)
+    : TrapezoidLocator(S, seed, trace::AnyHook{}) {}
+
+TrapezoidLocator::TrapezoidLocator(const Subdivision& S, std::uint64_t seed,
+                                   const trace::AnyHook& hook)
+    : S_(S) {
+  build(front, seed, hook);
+  build(back, seed + 1, hook);
 }
 
 //> trapezoid-chart
-void TrapezoidLocator::build(Side s, std::uint64_t seed) {
+void TrapezoidLocator::build(Side s, std::uint64_t seed, const trace::AnyHook& hook) {
   const auto& P = S_.points();
   // Closed: no edge joins a point of the open side to a point off it.
   for (Index h = 0; h < S_.half_edges(); ++h)
@@ -60,7 +76,11 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
                           : Location{Location::Kind::face, S_.face(g), 0});
   }
   try {
-    c.map.emplace(std::move(points), std::move(segments), seed);
+    if (hook)
+      c.map.emplace(std::move(points), std::move(segments), seed,
+                    about_vertices(c.vertex, hook));
+    else
+      c.map.emplace(std::move(points), std::move(segments), seed);
   } catch (const SegmentError& e) {
     throw MapError(S_.face(c.half_edge[e.segment()]),
                    std::string("its edges and another face's: ") + e.what());
@@ -69,12 +89,16 @@ void TrapezoidLocator::build(Side s, std::uint64_t seed) {
 //< trapezoid-chart
 
 //> trapezoid-answer
-Location TrapezoidLocator::locate(const Point& p) const {
+Location TrapezoidLocator::answer(const Point& p, const trace::AnyHook* hook) const {
   const int s = side_of(p);
-  if (s < 0 || !charts_[s].map)
-    return S_.half_edges() == 0 ? Location{} : walk(S_, p, S_.org(0));
+  if (s < 0 || !charts_[s].map) {
+    if (S_.half_edges() == 0) return Location{};
+    return hook ? walk(S_, p, S_.org(0), *hook) : walk(S_, p, S_.org(0));
+  }
   const Chart& c = charts_[s];
-  const TrapezoidMap::Hit h = c.map->locate(s == front ? p : antipode(p));
+  const Point q = s == front ? p : antipode(p);
+  const TrapezoidMap::Hit h =
+      hook ? c.map->locate(q, about_vertices(c.vertex, *hook)) : c.map->locate(q);
   switch (h.kind) {
     case TrapezoidMap::Hit::Kind::point:
       return at_vertex(S_, c.vertex[h.id]);
@@ -86,5 +110,11 @@ Location TrapezoidLocator::locate(const Point& p) const {
   return h.below == TrapezoidMap::none ? c.unbounded : c.above[h.below];
 }
 //< trapezoid-answer
+
+Location TrapezoidLocator::locate(const Point& p) const { return answer(p, nullptr); }
+
+Location TrapezoidLocator::locate(const Point& p, const trace::AnyHook& hook) const {
+  return answer(p, &hook);
+}
 
 }  // namespace t2

@@ -21,6 +21,20 @@ TrapezoidMap::TrapezoidMap(std::vector<Point> points,
                            std::vector<std::pair<Index, Index>> segments,
                            std::uint64_t seed)
     : P_(std::move(points)) {
+  NoTrace quiet;
+  build(std::move(segments), seed, quiet);
+}
+
+TrapezoidMap::TrapezoidMap(std::vector<Point> points,
+                           std::vector<std::pair<Index, Index>> segments,
+                           std::uint64_t seed, const trace::AnyHook& hook)
+    : P_(std::move(points)) {
+  build(std::move(segments), seed, hook);
+}
+
+template <class H>
+void TrapezoidMap::build(std::vector<std::pair<Index, Index>> segments,
+                         std::uint64_t seed, H& hook) {
   for (std::size_t i = 0; i < P_.size(); ++i)
     if (!(P_[i].w() > 0))
       throw BadInput(fmt::format("trapezoid map: point {} is not a front point", i));
@@ -36,7 +50,7 @@ TrapezoidMap::TrapezoidMap(std::vector<Point> points,
   std::iota(order.begin(), order.end(), Index(0));
   std::mt19937_64 rng(seed);
   std::shuffle(order.begin(), order.end(), rng);
-  for (const Index s : order) insert(s);
+  for (const Index s : order) insert(s, hook);
 }
 
 Index TrapezoidMap::make(const Trapezoid& t) {
@@ -91,7 +105,8 @@ Index TrapezoidMap::push(const Node& n) {
 }
 
 //> trapezoid-insert
-void TrapezoidMap::insert(Index s) {
+template <class H>
+void TrapezoidMap::insert(Index s, H& hook) {
   const Index p = seg_[s].a, q = seg_[s].b;
   const Point &P = P_[p], &Q = P_[q];
   // The trapezoids Δ0 … Δk that s crosses, left to right: across the right side of Δj at
@@ -119,6 +134,7 @@ void TrapezoidMap::insert(Index s) {
       throw SegmentError(s, fmt::format("segments {} and {} cross", s, t));
   // Δ0 loses A, the part left of p (none when p is Δ0's own leftp); the part right of p
   // is cut by s into an upper trapezoid U and a lower one L, which grow to the right.
+  const auto first = static_cast<Index>(trap_.size());  // the first new trapezoid
   Index A = none;
   if (d0.leftp != p) {
     A = make({d0.top, d0.bottom, d0.leftp, p});
@@ -169,11 +185,18 @@ void TrapezoidMap::insert(Index s) {
     if (j == 0 && A != none) n = {Node::x, p, trap_[A].node, push(n)};
     node_[leaf] = n;
   }
+  tell(hook, [&] {
+    trace::Report r = trace::about(trace::Event::trapezoid_split, {p, q});
+    r.face_list = D, r.faces = {first, static_cast<Index>(trap_.size())};
+    r.trapezoids = this;
+    return r;
+  });
 }
 //< trapezoid-insert
 
 //> trapezoid-query
-TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
+template <class H>
+TrapezoidMap::Hit TrapezoidMap::descend(const Point& p, H& hook) const {
   Hit h;
   Index n = 0;
   for (;;) {
@@ -181,18 +204,20 @@ TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
     const Node& v = node_[n];
     if (v.kind == Node::leaf) {
       h.id = v.id, h.below = trap_[v.id].bottom;
+      tell(hook, [&] { return told(trace::Event::dag_leaf, {}, ZERO, v.id); });
       return h;
     }
     if (v.kind == Node::x) {
       const Sign c = compare_xy(p, P_[v.id]);
+      tell(hook, [&] { return told(trace::Event::dag_x, {v.id}, c, 0); });
       if (c == ZERO) return {Hit::Kind::point, v.id, none, h.steps};
       n = c == NEGATIVE ? v.left : v.right;
       continue;
     }
     const Seg& t = seg_[v.id];
     const Sign o = orient(P_[t.a], P_[t.b], p);
-    if (o ==
-        ZERO) {  // on the line of t, and in its x-range: inside t (its ends have x-nodes)
+    tell(hook, [&] { return told(trace::Event::dag_y, {t.a, t.b}, o, 0); });
+    if (o == ZERO) {  // on t's line, in its x-range: inside t (its ends have x-nodes)
       if (compare_xy(P_[t.a], p) != NEGATIVE || compare_xy(p, P_[t.b]) != NEGATIVE)
         throw std::logic_error(
             "trapezoid map: a query on a segment's line out of its range");
@@ -202,6 +227,22 @@ TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
   }
 }
 //< trapezoid-query
+
+trace::Report TrapezoidMap::told(trace::Event e, std::initializer_list<std::size_t> at,
+                                 Sign sign, Index trapezoid) const {
+  trace::Report r = trace::about(e, at);
+  r.sign = sign, r.faces = {trapezoid, 0}, r.trapezoids = this;
+  return r;
+}
+
+TrapezoidMap::Hit TrapezoidMap::locate(const Point& p) const {
+  NoTrace quiet;
+  return descend(p, quiet);
+}
+
+TrapezoidMap::Hit TrapezoidMap::locate(const Point& p, const trace::AnyHook& hook) const {
+  return descend(p, hook);
+}
 
 // The longest path, by a depth-first search that finishes each node after its children
 // (the DAG shares nodes, so each is finished once and then read).

@@ -2,10 +2,9 @@
 // 000's Algorithm 15 on the Delaunay triangulation of the input points, each query starting at
 // the last query found inside a face (before there is one, at a vertex of the last answer's
 // face). The triangulation and the queries are made before the clock starts (the worker's peers
-// get the same queries: locate_queries). The trapezoidal maps of trapezoid_locate.hpp answer the
-// same queries with their structure built before the clock; `locate-build` times what each
-// method builds from the points: the Delaunay triangulation and the half-edges (walk-build),
-// and the trapezoidal maps on top (trapezoid-build); CGAL's is its triangulation.
+// get the same queries: locate_queries). `locate-build` times what each method builds from the
+// points: here the Delaunay triangulation and the half-edges (walk-build); CGAL's is its
+// triangulation. The trapezoidal map's entries are in location_trapezoid.cpp.
 #include "algorithms/location.hpp"
 
 #include <fmt/format.h>
@@ -17,7 +16,6 @@
 #include "algorithms/answer.hpp"
 #include "algorithms/registry.hpp"
 #include "t2/kernel/error.hpp"
-#include "t2/location/trapezoid_locate.hpp"
 #include "t2/location/walk.hpp"
 #include "t2/trace/overlay.hpp"
 #include "t2/trace/recording.hpp"
@@ -76,18 +74,74 @@ std::vector<t2::Point> animation_queries(std::span<const t2::Point> points) {
   return Q;
 }
 
-namespace {
+namespace tr = t2::trace;
+using t2::Location;
+using t2::Subdivision;
 
-T2_PROBLEM({"locate", "queries in a face", Input::plane});
-T2_PROBLEM({"locate-build", "faces", Input::plane});
-
-// The map of the bench: the Delaunay triangles of the points.
 std::shared_ptr<const t2::Subdivision> delaunay_map(const std::vector<t2::Point>& points) {
   const t2::Triangulation T = t2::delaunay(points);
   std::vector<std::vector<t2::Subdivision::Index>> F;
   for (const auto& t : T.finite_triangles()) F.push_back({t[0], t[1], t[2]});
   return std::make_shared<const t2::Subdivision>(points, F);
 }
+
+
+std::shared_ptr<const Subdivision> animation_map(const std::vector<t2::Point>& P, const std::string& name) {
+  try {
+    auto S = delaunay_map(P);
+    if (S->faces() == 0)
+      throw t2::Undefined(fmt::format("{}: the Delaunay triangulation of the points has no triangle (fewer than three "
+                                      "points off one line): no map to locate in",
+                                      name));
+    return S;
+  } catch (const t2::Undefined& e) {
+    if (std::string(e.what()).rfind(name + ":", 0) == 0) throw;
+    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
+  } catch (const t2::BadInput& e) {
+    throw t2::BadInput(fmt::format("{}: {}", name, e.what()));
+  }
+}
+
+std::vector<tr::Tri> map_triangles(const Subdivision& S) {
+  std::vector<tr::Tri> out;
+  for (Subdivision::Index f = 0; f < S.faces(); ++f)
+    out.push_back({S.org(S.first(f)), S.org(S.first(f) + 1), S.org(S.first(f) + 2)});
+  return out;
+}
+
+tr::Tri face_triangle(const Subdivision& S, Subdivision::Index f) {
+  return {S.org(S.first(f)), S.org(S.first(f) + 1), S.org(S.first(f) + 2)};
+}
+
+std::string tri_text(const tr::Tri& t) { return fmt::format("p{} p{} p{}", t[0], t[1], t[2]); }
+
+std::string query_text(const t2::Point& q) {
+  if (q.w() == 0) return fmt::format("[0, {}, {}] on Omega", q.x(), q.y());
+  return fmt::format("({:.4g}, {:.4g}){}", q.x() / q.w(), q.y() / q.w(), q.w() < 0 ? " on the back" : "");
+}
+
+std::string answer_text(const Subdivision& S, const Location& l, tr::Step& s) {
+  if (l.kind == Location::Kind::outside) return "outside the map";
+  const tr::Tri t = face_triangle(S, l.face);
+  if (l.kind == Location::Kind::face) {
+    s.touched.push_back(t);
+    s.edges.insert(s.edges.end(), {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}});
+    s.points.insert(s.points.end(), t.begin(), t.end());
+    return fmt::format("inside triangle {}", tri_text(t));
+  }
+  if (l.kind == Location::Kind::edge) {
+    s.edges.push_back({t[l.k], t[(l.k + 1) % 3]});
+    s.points.insert(s.points.end(), {t[l.k], t[(l.k + 1) % 3]});
+    return fmt::format("on the edge p{} p{}", t[l.k], t[(l.k + 1) % 3]);
+  }
+  s.points.push_back(t[l.k]);
+  return fmt::format("at the vertex p{}", t[l.k]);
+}
+
+namespace {
+
+T2_PROBLEM({"locate", "queries in a face", Input::plane});
+T2_PROBLEM({"locate-build", "faces", Input::plane});
 
 // The timed run: every query walked, from the last query inside a face.
 Timed walk_run(BenchInput& in, bool sorted) {
@@ -109,66 +163,6 @@ Timed walk_run(BenchInput& in, bool sorted) {
   };
 }
 
-namespace tr = t2::trace;
-using t2::Location;
-using t2::Subdivision;
-
-// The map of the animations: the Delaunay triangles of the points (input indices), or the error
-// naming the scene.
-std::shared_ptr<const Subdivision> animation_map(const Points& P, const std::string& name) {
-  try {
-    auto S = delaunay_map(P);
-    if (S->faces() == 0)
-      throw t2::Undefined(fmt::format("{}: the Delaunay triangulation of the points has no triangle (fewer than three "
-                                      "points off one line): no map to locate in",
-                                      name));
-    return S;
-  } catch (const t2::Undefined& e) {
-    if (std::string(e.what()).rfind(name + ":", 0) == 0) throw;
-    throw t2::Undefined(fmt::format("{}: {}", name, e.what()));
-  } catch (const t2::BadInput& e) {
-    throw t2::BadInput(fmt::format("{}: {}", name, e.what()));
-  }
-}
-
-// The triangles of the map (its faces), as trace triples.
-std::vector<tr::Tri> map_triangles(const Subdivision& S) {
-  std::vector<tr::Tri> out;
-  for (Subdivision::Index f = 0; f < S.faces(); ++f)
-    out.push_back({S.org(S.first(f)), S.org(S.first(f) + 1), S.org(S.first(f) + 2)});
-  return out;
-}
-
-tr::Tri face_triangle(const Subdivision& S, Subdivision::Index f) {
-  return {S.org(S.first(f)), S.org(S.first(f) + 1), S.org(S.first(f) + 2)};
-}
-
-std::string tri_text(const tr::Tri& t) { return fmt::format("p{} p{} p{}", t[0], t[1], t[2]); }
-
-// "(x, y)", "(x, y) on the back" or "[0, x, y] on Omega".
-std::string query_text(const t2::Point& q) {
-  if (q.w() == 0) return fmt::format("[0, {}, {}] on Omega", q.x(), q.y());
-  return fmt::format("({:.4g}, {:.4g}){}", q.x() / q.w(), q.y() / q.w(), q.w() < 0 ? " on the back" : "");
-}
-
-// What the answer l is, in words, and what a picture of it highlights.
-std::string answer_text(const Subdivision& S, const Location& l, tr::Step& s) {
-  if (l.kind == Location::Kind::outside) return "outside the map";
-  const tr::Tri t = face_triangle(S, l.face);
-  if (l.kind == Location::Kind::face) {
-    s.touched.push_back(t);
-    s.edges.insert(s.edges.end(), {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}});
-    s.points.insert(s.points.end(), t.begin(), t.end());
-    return fmt::format("inside triangle {}", tri_text(t));
-  }
-  if (l.kind == Location::Kind::edge) {
-    s.edges.push_back({t[l.k], t[(l.k + 1) % 3]});
-    s.points.insert(s.points.end(), {t[l.k], t[(l.k + 1) % 3]});
-    return fmt::format("on the edge p{} p{}", t[l.k], t[(l.k + 1) % 3]);
-  }
-  s.points.push_back(t[l.k]);
-  return fmt::format("at the vertex p{}", t[l.k]);
-}
 
 // The overlay of query k: the query point and the walk's segment from vertex v (when defined).
 t2::Scene query_overlay(const Points& P, const t2::Point& q, std::size_t k, Subdivision::Index v) {
@@ -178,14 +172,14 @@ t2::Scene query_overlay(const Points& P, const t2::Point& q, std::size_t k, Subd
   return o;
 }
 
-// The answer of the animation as a scene: the triangle holding each query that lies inside one,
-// in the order of the queries (the untraced walk's answers), and the queries.
-t2::Scene walk_scene(const Points& P) {
+}  // namespace
+
+t2::Scene answers_scene(const Points& P, const Locate& locate) {
   const auto S = animation_map(P, "points");
   const std::vector<t2::Point> Q = animation_queries(P);
   t2::Scene out;
   for (std::size_t k = 0; k < Q.size(); ++k) {
-    const Location l = t2::walk(*S, Q[k], S->org(0));
+    const Location l = locate(*S, Q[k]);
     if (l.kind == Location::Kind::face) {
       t2::ScenePolygon g;
       for (const std::size_t i : face_triangle(*S, l.face)) g.vertices.push_back(tr::overlay_point(P[i]));
@@ -195,6 +189,8 @@ t2::Scene walk_scene(const Points& P) {
   }
   return out;
 }
+
+namespace {
 
 // The walk (Algorithm 15) recorded: the map and the queries (lecture), each region entered and
 // each vertex stood at (debugging), each query's path and answer (lecture), all the answers.
@@ -269,30 +265,12 @@ T2_ALGORITHM({.name = "walk",
               .problem = "locate",
               .summary = "t2::walk: seed 000's Algorithm 15 on the Delaunay triangulation, queries in random order",
               .title = "point location by walking (Algorithm 15) in the points' Delaunay triangulation",
-              .run = walk_scene,
+              .run = [](const Points& P) {
+                return answers_scene(P, [](const Subdivision& S, const t2::Point& q) { return t2::walk(S, q, S.org(0)); });
+              },
               .record = record_walk,
               .time = [](BenchInput& in) -> Timed { return walk_run(in, false); },
               .peers = {"cgal", "walk-sorted", "cgal-sorted"}});
-
-// The timed run: every query answered by the trapezoidal maps (built before the clock).
-Timed trapezoid_run(BenchInput& in) {
-  auto S = delaunay_map(in.points);
-  auto L = std::make_shared<const t2::TrapezoidLocator>(*S);
-  auto Q = std::make_shared<const std::vector<t2::Point>>(locate_queries(in.points, false));
-  return [S, L, Q] {
-    std::size_t inside = 0;
-    for (const auto& q : *Q) inside += L->locate(q).kind != t2::Location::Kind::outside;
-    return inside;
-  };
-}
-
-T2_ALGORITHM({.name = "trapezoid",
-              .problem = "locate",
-              .summary = "t2::TrapezoidLocator: the trapezoidal map and its history DAG (randomized incremental) "
-                         "on the Delaunay triangulation, queries in random order",
-              .title = "point location by a trapezoidal map",
-              .time = [](BenchInput& in) -> Timed { return trapezoid_run(in); },
-              .peers = {"walk", "cgal"}});
 
 T2_ALGORITHM({.name = "walk-build",
               .problem = "locate-build",
@@ -301,19 +279,6 @@ T2_ALGORITHM({.name = "walk-build",
               .time = [](BenchInput& in) -> Timed {
                 return [&P = in.points] { return delaunay_map(P)->faces(); };
               }});
-
-T2_ALGORITHM({.name = "trapezoid-build",
-              .problem = "locate-build",
-              .summary = "walk-build, then t2::TrapezoidLocator's trapezoidal maps on the triangles",
-              .title = "the trapezoidal map's preprocessing",
-              .time = [](BenchInput& in) -> Timed {
-                return [&P = in.points] {
-                  const auto S = delaunay_map(P);
-                  const t2::TrapezoidLocator L(*S);
-                  return S->faces();
-                };
-              },
-              .peers = {"walk-build", "cgal"}});
 
 T2_ALGORITHM({.name = "walk-sorted",
               .problem = "locate",

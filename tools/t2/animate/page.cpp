@@ -42,10 +42,12 @@ void replace(std::string& text, std::string_view marker, const std::string& by) 
 }
 
 nlohmann::json to_json(const t2::trace::Step& s) {
-  return {{"kind", s.kind},   {"depth", static_cast<int>(s.depth)},
-          {"text", s.text},   {"structure", s.structure},
-          {"chain", s.chain}, {"closed", s.closed},
-          {"points", s.points}, {"touched", s.touched}};
+  nlohmann::json j = {{"kind", s.kind},   {"depth", static_cast<int>(s.depth)},
+                      {"text", s.text},   {"structure", s.structure},
+                      {"chain", s.chain}, {"closed", s.closed},
+                      {"points", s.points}, {"touched", s.touched}};
+  if (!s.entries.empty()) j["entries"] = s.entries;  // only the steps that have them
+  return j;
 }
 
 // A step's sequence `now` as the edit script from `before` (delta.hpp), when that is shorter than

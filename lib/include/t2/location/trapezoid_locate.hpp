@@ -40,10 +40,22 @@ class TrapezoidLocator {
   /// @param S the subdivision (must outlive the locator)
   /// @param seed the seed of the insertion orders
   explicit TrapezoidLocator(const Subdivision& S, std::uint64_t seed = 0x7A9E201D);
+  /// The same, telling `hook` each insertion into each map (`Event::trapezoid_split`, front
+  /// map first): the points it names are vertices of S, and `input_of` maps the map's own
+  /// points to them (on the back its points are their antipodes).
+  /// @param S the subdivision (must outlive the locator)
+  /// @param seed the seed of the insertion orders
+  /// @param hook hears the reports
+  TrapezoidLocator(const Subdivision& S, std::uint64_t seed, const trace::AnyHook& hook);
 
   /// Where p lies: the answer of `walk` (walk.hpp), exact.
   /// @param p the query point
   Location locate(const Point& p) const;
+  /// The same, telling `hook` each DAG node the query meets (`dag_x`, `dag_y`, `dag_leaf`, with
+  /// the points as vertices of S), or the walk's reports where the walk answers.
+  /// @param p the query point
+  /// @param hook hears the reports
+  Location locate(const Point& p, const trace::AnyHook& hook) const;
 
   /// The trapezoidal map of side `s`, or nullptr when its chart is not closed.
   /// @param s the side
@@ -57,7 +69,8 @@ class TrapezoidLocator {
     std::vector<Location> above;                // segment -> the region on its upper side
     Location unbounded;                         // the region of the unbounded part
   };
-  void build(Side s, std::uint64_t seed);
+  void build(Side s, std::uint64_t seed, const trace::AnyHook& hook);
+  Location answer(const Point& p, const trace::AnyHook* hook) const;
   const Subdivision& S_;
   Chart charts_[2];
 };

@@ -20,15 +20,21 @@
 /// **Answers.** A query point p (w > 0) is equal to an endpoint (`Hit::point`), inside a segment
 /// (`Hit::segment`), or strictly inside a trapezoid whose bottom segment is `below` (`none` if
 /// nothing is below p). All decisions are signs of `compare_xy` and `orient` on input points.
+///
+/// **Tracing** (trace/hook.hpp). The construction and the query have overloads that tell a hook
+/// each insertion (`trapezoid_split`) and each DAG node a query meets (`dag_x`, `dag_y`,
+/// `dag_leaf`), with the map lent; the overloads without a hook contain no trace code.
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/point.hpp"
+#include "t2/trace/hook.hpp"
 
 namespace t2 {
 
@@ -86,11 +92,23 @@ class TrapezoidMap {
   /// @param segments the segments, as index pairs into `points`
   /// @param seed the seed of the insertion order
   TrapezoidMap(std::vector<Point> points, std::vector<std::pair<Index, Index>> segments, std::uint64_t seed);
+  /// The same construction, telling `hook` each insertion (`Event::trapezoid_split`; the points
+  /// named are indices into `points`).
+  /// @param points the endpoints, each with w > 0, no two equal
+  /// @param segments the segments, as index pairs into `points`
+  /// @param seed the seed of the insertion order
+  /// @param hook hears the reports
+  TrapezoidMap(std::vector<Point> points, std::vector<std::pair<Index, Index>> segments, std::uint64_t seed,
+               const trace::AnyHook& hook);
 
   /// Locates p (w > 0) by descending the DAG. Expected O(log n) steps for random insertion
   /// orders (chapter 14, part 3).
   /// @param p the query point
   Hit locate(const Point& p) const;
+  /// The same query, telling `hook` each DAG node it meets (`dag_x`, `dag_y`, `dag_leaf`).
+  /// @param p the query point
+  /// @param hook hears the reports
+  Hit locate(const Point& p, const trace::AnyHook& hook) const;
 
   /// The number of segments.
   std::size_t segments() const { return seg_.size(); }
@@ -103,6 +121,8 @@ class TrapezoidMap {
   std::size_t depth() const;
   /// Segment i as (left, right) point indices, left before right in the x-order.
   std::pair<Index, Index> segment(Index i) const { return {seg_[i].a, seg_[i].b}; }
+  /// Point i (as given, w > 0).
+  const Point& point(Index i) const { return P_[i]; }
 
  private:
   struct Seg {
@@ -113,7 +133,14 @@ class TrapezoidMap {
     Index id;           // the point (x), the segment (y), the trapezoid (leaf)
     Index left, right;  // x: left, right; y: above, below
   };
-  void insert(Index s);
+  template <class H>
+  void build(std::vector<std::pair<Index, Index>> segments, std::uint64_t seed, H& hook);
+  template <class H>
+  void insert(Index s, H& hook);
+  template <class H>
+  Hit descend(const Point& p, H& hook) const;
+  trace::Report told(trace::Event e, std::initializer_list<std::size_t> at, Sign sign,
+                     Index trapezoid) const;
   Index locate_left(Index s) const;
   Index make(const Trapezoid& t);
   void link_upper(Index left, Index right);

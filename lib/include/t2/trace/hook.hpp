@@ -34,6 +34,7 @@ namespace t2 {
 
 class Triangulation;
 class UnionFind;
+class TrapezoidMap;
 struct EmptyCircle;
 
 namespace trace {
@@ -44,8 +45,8 @@ namespace trace {
 /// event: the sites of its arcs left to right, input indices, a site once per arc), the sweeps
 /// of segment intersection (chapter 13: Bentley–Ottmann, the circular sweep) four more (a
 /// segment sweep names *segments* by their input index), the proximity problems (chapter 12)
-/// seven more, and Chan's hull the last two (with `vertex`, and Graham's events when one group
-/// holds every point).
+/// seven more, Chan's hull two more (with `vertex`, and Graham's events when one group holds
+/// every point), and the trapezoidal map of point location (chapter 14) the last four.
 enum class Event {
   consider,       ///< the algorithm looks at point at[0] (Jarvis: at[1] is the candidate after it)
   push,           ///< at[0] joins the chain (stack, hull so far)
@@ -124,6 +125,17 @@ enum class Event {
                   ///< group's points `through`); the first group of a round holds m points
   tangent,        ///< Chan: from the hull vertex at[0], the tangent to a group's hull touches
                   ///< at[1] (the group's best next vertex for Jarvis); `chain` the hull so far
+  // The trapezoidal map (location/trapezoid_map.hpp): `trapezoids` lends the map now; its
+  // trapezoids are named by their index in it, points by input index (`input_of` maps the map's
+  // own points to them when it is not the identity).
+  trapezoid_split, ///< the segment at[0] → at[1] (left to right in the map's x-order) is inserted:
+                   ///< it crossed the trapezoids `face_list`, left to right, which are destroyed,
+                   ///< and the trapezoids faces[0] to faces[1] − 1 are new
+  dag_x,           ///< the query meets the x-node of point at[0]: `sign` is its x-order against it
+                   ///< (NEGATIVE: left, ZERO: the query is that point)
+  dag_y,           ///< the query meets the y-node of the segment at[0] → at[1]: `sign` is
+                   ///< orient(at[0], at[1], query) (POSITIVE: above, ZERO: on it)
+  dag_leaf,        ///< the query reaches the leaf of trapezoid faces[0]
 };
 
 /// One event, as the algorithm reports it (see the file comment).
@@ -145,6 +157,7 @@ struct Report {
   std::span<const std::size_t> through;    ///< a second list of input indices (sweep: see the event)
   const UnionFind* forest = nullptr;   ///< Kruskal's components now, over input indices (emst)
   const EmptyCircle* circle = nullptr; ///< a candidate circle, exact (the largest empty circle)
+  const TrapezoidMap* trapezoids = nullptr;  ///< the trapezoidal map now (its events); lent
 
   /// The input index of vertex v of `tr`.
   std::size_t input(std::uint32_t v) const { return input_of.empty() ? v : input_of[v]; }

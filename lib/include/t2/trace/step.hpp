@@ -50,6 +50,10 @@ struct Step {
   std::vector<std::size_t> chain;     ///< a chain of point indices (stack, hull so far)
   bool closed = false;                ///< the chain is a closed polygon (a hull), not an open path
   std::vector<Tri> triangles;         ///< the finite triangles so far (triangulations)
+  /// The structure as lines of text, when it is neither a chain nor triangles (a trapezoidal
+  /// map's DAG: its size, or a query's path down it); a player shows them beside the picture,
+  /// the last one in focus.
+  std::vector<std::string> entries;
   // What to highlight.
   std::vector<std::size_t> points;  ///< points in focus; the first is the current point
   std::vector<Edge> edges;          ///< edges in focus (a candidate edge, a bridge, a new edge)
