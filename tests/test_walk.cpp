@@ -13,6 +13,7 @@
 #include "t2/kernel/orient.hpp"
 #include "t2/location/walk.hpp"
 #include "t2/triangulation/delaunay.hpp"
+#include "t2/triangulation/triangulate.hpp"
 
 namespace {
 
@@ -140,6 +141,38 @@ TEST(Walk, MatchesBruteForceOnFrontDelaunayMaps) {
     for (const auto& t : T.finite_triangles()) F.push_back({t[0], t[1], t[2]});
     const Subdivision S(P, F);
     expect_walk_matches_brute(S, queries(S, rng, 200), rng);
+  }
+}
+
+// The visibility walk that `walk(S, p, from, face)` tries first (walk.cpp) must give the same
+// answers where it may circle or give up: Delaunay triangulations of grid points (four points on
+// a circle everywhere), triangulations that are not Delaunay (the sweep of chapter 09: long thin
+// fans), both with queries on vertices, edges, the back and Ω. And `convex_triangle` is Δ > 0.
+TEST(Walk, FromAFaceMatchesBruteForceOnCocircularAndNonDelaunayTriangulations) {
+  std::mt19937_64 rng(31);
+  for (int round = 0; round < 8; ++round) {
+    std::vector<Point> P;
+    const int m = 4 + round;
+    for (int x = 0; x < m; ++x)
+      for (int y = 0; y < m + round % 3; ++y) P.push_back(Point::cartesian(x - m / 2, y - m / 2));
+    std::uniform_int_distribution<int> c(-9, 9);
+    std::set<std::pair<int, int>> xy;
+    while (xy.size() < 40u) xy.insert({c(rng), c(rng)});
+    std::vector<Point> R;
+    for (auto [x, y] : xy) R.push_back(Point::cartesian(x, y));
+    const std::pair<const std::vector<Point>*, t2::Triangulation> maps[] = {{&P, t2::delaunay(P)},
+                                                                          {&R, t2::triangulate(R)}};
+    for (const auto& [points, T] : maps) {
+      Faces F;
+      for (const auto& t : T.finite_triangles()) F.push_back({t[0], t[1], t[2]});
+      const Subdivision S(*points, F);
+      for (Index f = 0; f < S.faces(); ++f) {
+        const Index h = S.first(f);
+        EXPECT_EQ(S.convex_triangle(f), t2::orient(S.points()[S.org(h)], S.points()[S.org(h + 1)],
+                                                   S.points()[S.org(h + 2)]) == t2::POSITIVE);
+      }
+      expect_walk_matches_brute(S, queries(S, rng, 150), rng);
+    }
   }
 }
 

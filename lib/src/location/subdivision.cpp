@@ -106,6 +106,12 @@ void Subdivision::build(const std::vector<std::vector<Index>>& faces) {
   std::vector<Index> fill(corner_first_.begin(), corner_first_.end() - 1);
   for (Index h = 0; h < org_.size(); ++h) corner_[fill[org(h)]++] = {face(h), slot(h)};
   check_corners();
+  convex_.assign(faces.size(), 0);
+  for (Index f = 0; f < faces.size(); ++f)
+    if (size(f) == 3) {
+      const Index h = first(f);
+      convex_[f] = orient(points_[org(h)], points_[org(h + 1)], points_[org(h + 2)]) == POSITIVE;
+    }
 }
 
 // At each vertex, no corner holds a ray of another (file comment of subdivision.hpp).

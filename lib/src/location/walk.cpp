@@ -1,7 +1,9 @@
 // The walk of seed 000's Algorithm 15 and the brute-force location (walk.hpp).
 #include "t2/location/walk.hpp"
 
+#include <cstdint>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -123,26 +125,24 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
     // is left by its edge u → w whose ends the line qp separates, u on the right of qp and w
     // on its left (walk.hpp, "Triangles"); p is inside when on the inner side of u → w.
     //> walk-triangle
-    if (region != Subdivision::outside && S.size(region) == 3) {
+    if (region != Subdivision::outside && S.convex_triangle(region)) {
       const bool entered = entry != Subdivision::none;
       const Index ab = entered ? entry : S.first(region), bc = S.next(ab), ca = S.next(bc);
       const Point &a = P[S.org(ab)], &b = P[S.org(bc)], &c = P[S.org(ca)];
       Index out = Subdivision::none;
-      if (orient(a, b, c) == POSITIVE) {
-        const int sc = orient(q, p, c);
-        if (entered && sc == 0) {  // in through ab, the segment runs into c
-          if (p == c) return at_vertex(S, S.org(ca));
-          if (orient(b, c, p) == POSITIVE) return Location{Location::Kind::face, region, 0};
-          v = S.org(ca);
-          return std::nullopt;
-        }
-        const int sa = orient(q, p, a);
-        if (entered) {  // a, b on opposite sides: out by bc if c is on a's side, else by ca
-          out = sc == sa ? bc : ca;
-        } else if (const int sb = orient(q, p, b); sa != 0 && sb != 0 && sc != 0) {
-          out = sa < 0 && sb > 0 ? ab : sb < 0 && sc > 0 ? bc : ca;
-        }  // else the line qp passes through a vertex: the general step below
+      const int sc = orient(q, p, c);
+      if (entered && sc == 0) {  // in through ab, the segment runs into c
+        if (p == c) return at_vertex(S, S.org(ca));
+        if (orient(b, c, p) == POSITIVE) return Location{Location::Kind::face, region, 0};
+        v = S.org(ca);
+        return std::nullopt;
       }
+      const int sa = orient(q, p, a);
+      if (entered) {  // a, b on opposite sides: out by bc if c is on a's side, else by ca
+        out = sc == sa ? bc : ca;
+      } else if (const int sb = orient(q, p, b); sa != 0 && sb != 0 && sc != 0) {
+        out = sa < 0 && sb > 0 ? ab : sb < 0 && sc > 0 ? bc : ca;
+      }  // else the line qp passes through a vertex: the general step below
       if (out != Subdivision::none) {
         const Point &u = P[S.org(out)], &w = P[S.dest(out)];
         const int o = orient(u, w, p);
@@ -188,6 +188,47 @@ std::optional<Location> through_regions(const Subdivision& S, const Point& q, co
     here = bm;
   }
 }
+
+//> walk-visibility
+// The visibility walk (walk.hpp): from face f, across an edge of the current triangle
+// with p strictly on its outer side (the edge entered by is not tested again, and a coin
+// picks which of the other two goes first), until p is on the inner side of all three:
+// then p is in the closed triangle, and the edges through it say where. Gives up (none)
+// at a face that is not a convex triangle, at a boundary edge, or after as many steps as
+// the map has faces.
+std::optional<Location> visibility_walk(const Subdivision& S, const Point& p, Index f) {
+  const auto& P = S.points();
+  Index entry = Subdivision::none;
+  std::uint32_t coin = 0x9E3779B9u;
+  for (std::size_t step = 0; step <= S.faces(); ++step) {
+    if (!S.convex_triangle(f)) return std::nullopt;
+    const Index h = S.first(f);  // half-edge h + k runs from vertex k to vertex k + 1
+    const Point* v[3] = {&P[S.org(h)], &P[S.org(h + 1)], &P[S.org(h + 2)]};
+    coin = coin * 1664525u + 1013904223u;  // a linear congruential generator
+    const Index k0 = entry == Subdivision::none ? 0 : (entry - h + 1) % 3;
+    Index order[3] = {k0, (k0 + 1) % 3, (k0 + 2) % 3};  // the last: the entry, if any
+    if (coin >> 31) std::swap(order[0], order[1]);
+    Index zero[2] = {0, 0};
+    int zeros = 0;
+    bool crossed = false;
+    for (int i = 0; i < (entry == Subdivision::none ? 3 : 2); ++i) {
+      const Index k = order[i];
+      const Sign o = orient(*v[k], *v[(k + 1) % 3], p);
+      if (o == ZERO) zero[zeros++] = h + k;
+      if (o != NEGATIVE) continue;
+      if (S.twin(h + k) == Subdivision::none) return std::nullopt;  // the complement
+      entry = S.twin(h + k), f = S.face(entry), crossed = true;
+      break;
+    }
+    if (crossed) continue;
+    if (zeros == 0) return Location{Location::Kind::face, f, 0};
+    if (zeros == 1) return at_edge(S, zero[0]);
+    const Index a = zero[0] - h, b = zero[1] - h;  // two edges through p: their vertex
+    return at_vertex(S, S.org(h + ((a + 1) % 3 == b ? b : a)));
+  }
+  return std::nullopt;
+}
+//< walk-visibility
 
 // The walk's first state, from vertex v of the segment qp (v != p), alternating with the second.
 // The hook hears each vertex (Event::reach_vertex) and each region entered.
@@ -245,6 +286,8 @@ Location walk(const Subdivision& S, const Point& p, Index qv, const trace::AnyHo
 }
 
 Location walk(const Subdivision& S, const Point& p, const Point& from, Index face, std::vector<Index>* crossed) {
+  if (!crossed)
+    if (auto l = visibility_walk(S, p, face)) return *l;
   if (p == from) return {Location::Kind::face, face, 0};
   if (p == antipode(from)) return walk(S, p, S.org(S.first(face)), crossed);
   const Point r = detail::off_line_point(from, p);

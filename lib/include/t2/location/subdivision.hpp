@@ -108,6 +108,10 @@ class Subdivision {
   }
   /// The boundary half-edges (no twin): the edges of the complement, `outside`.
   const std::vector<Index>& boundary() const { return boundary_; }
+  /// Whether face f is a convex triangle (three vertices, Δ > 0: the small triangle of T², not
+  /// its complement), the faces on which the walks take their short steps (walk.hpp); decided
+  /// once, by the exact `orient`, when the map is made.
+  bool convex_triangle(Index f) const { return convex_[f] != 0; }
 
  private:
   void build(const std::vector<std::vector<Index>>& faces);
@@ -116,6 +120,7 @@ class Subdivision {
   std::vector<Index> first_{0}, face_, org_, twin_, boundary_;
   std::vector<Index> corner_first_;
   std::vector<Corner> corner_;
+  std::vector<std::uint8_t> convex_;  // per face: 1 for a convex triangle
 };
 
 }  // namespace t2

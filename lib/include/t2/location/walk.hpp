@@ -96,7 +96,12 @@ Location walk(const Subdivision& S, const Point& p, Subdivision::Index q,
 /// Locates p by walking from the point `from`, which must be strictly inside face `face` (the
 /// last answer of a run of queries, say), along the segment to p; when p = ¬from it starts
 /// from a vertex of the face instead. The same walk without its first vertex, whose corners
-/// cost more predicates than a step across a triangle. Exact.
+/// cost more predicates than a step across a triangle. Exact. Without `crossed` it first tries
+/// the visibility walk (Devillers, Pion and Teillaud): from triangle to triangle across any
+/// edge with p strictly beyond it, one orientation an edge, the edge order flipped by a coin;
+/// it gives up at a face that is not a convex triangle, at the boundary, or after as many steps
+/// as there are faces (it may circle on a triangulation that is not Delaunay), and then the
+/// walk along the segment answers. The answer is the same either way.
 Location walk(const Subdivision& S, const Point& p, const Point& from, Subdivision::Index face,
               std::vector<Subdivision::Index>* crossed = nullptr);
 
