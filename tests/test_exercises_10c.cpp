@@ -6,16 +6,19 @@
 // library functions do. Inputs: random sites with mixed weights, in general position and on a
 // small grid (collinear hull sites, parallel hull edges facing each other, back sites on the
 // lines of front hull edges), with antipodal pairs, a few back sites near Ω (a hull), and tiny
-// sets.
+// sets. And the grader refuses a submission that calls one of the names its manifest forbids.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <fstream>
 #include <random>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "../exercises/harness/grader_testing.hpp"
 #include "solution/band.cpp"  // the reference solution of exercises/10c-band
 #include "t2/kernel/error.hpp"
 #include "t2/triangulation/delaunay.hpp"
@@ -129,6 +132,35 @@ TEST(Exercise10c, TinySetsAreTheLibrarys) {
     ASSERT_FALSE(on_one_line(cases[k])) << k;
     EXPECT_GE(expect_same(cases[k], "case " + std::to_string(k)), 0) << k;
   }
+}
+
+// The grader reads the compiled object's symbols: a solution of 10c that takes the library's
+// t2::delaunay (declared by hand, since no allowed header declares it) scores 0, named.
+TEST(Exercise10c, TheGraderRefusesTheLibrarysDelaunay) {
+  if (std::getenv("T2_SANITIZED")) GTEST_SKIP() << "grading compiles and runs programs: skipped under sanitizers";
+  t2::grader_testing::TempDir t;
+  std::ofstream(t.path / "band.cpp") << R"(#include "band.hpp"
+#include <span>
+#include <stdexcept>
+namespace t2 {
+class Triangulation;
+Triangulation delaunay(std::span<const Point> points);
+}  // namespace t2
+namespace ex10c {
+std::vector<long> owners(const std::vector<t2::Point>&, const t2::Point&) {
+  throw std::logic_error("owners() is not implemented yet");
+}
+std::vector<long> band(const std::vector<t2::Point>&) {
+  using Delaunay = t2::Triangulation (*)(std::span<const t2::Point>);
+  volatile Delaunay d = &t2::delaunay;
+  (void)d;
+  throw std::logic_error("band() is not implemented yet");
+}
+}  // namespace ex10c
+)";
+  const auto r = t2::grader_testing::grade(T2_TOOL, "10c", t.path);
+  EXPECT_EQ(r.score, 0);
+  EXPECT_NE(r.output.find("your code calls t2::delaunay"), std::string::npos) << r.output;
 }
 
 }  // namespace
