@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/voronoi.hpp"
 #include "command.hpp"
 #include "model_picture.hpp"
 #include "scene_argument.hpp"
-#include "t2/kernel/distance.hpp"
 #include "t2/kernel/error.hpp"
 #include "t2/kernel/scene.hpp"
 #include "t2/voronoi/fortune.hpp"
@@ -58,60 +58,10 @@ std::string listing(const t2::VoronoiDiagram& vd) {
   return out;
 }
 
-/// The edge from a to b between the cells of s and t, drawn: the segment of T² from a to b when
-/// a point of it, a + b, has no site nearer than s; otherwise the other arc, through ¬(a + b).
-/// Only the sites of a and b need a test: each site d ≠ s, t leaves s nearest on a closed half
-/// H_d of the bisector's great circle, and the edge is the arc ∩ H_d from a to b. For d at a,
-/// H_d ends at a (d, s, t are equidistant there), and likewise at b; so the arc ∩ H_d over
-/// those d alone, which holds the edge, already ends at a and at b: it is the edge. O(1) a
-/// vertex of three sites, where a scan of all n sites made the drawing O(n²).
-void draw_edge(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd, const t2::VoronoiDiagram::Edge& e,
-               t2::Scene& s) {
-  const t2::SceneStyle st = style_of("color=red width=2 layer=1");
-  const t2::ExactPoint a = vd.vertex(e.a), b = vd.vertex(e.b);
-  if (a == t2::antipode(b)) return;  // either half of the bisector: not drawn
-  const t2::ExactPoint m(t2::Integer(a.w() + b.w()), t2::Integer(a.x() + b.x()), t2::Integer(a.y() + b.y()));
-  bool other = false;
-  const t2::ExactPoint se = t2::to_exact(P[e.s]);
-  for (const Index v : {e.a, e.b})
-    for (const Index k : vd.vertex_sites(v)) {
-      try {
-        other = other || t2::compare_distance(t2::to_exact(P[k]), se, m) == t2::NEGATIVE;
-      } catch (const t2::Undefined&) {  // m on Ω between a front and a back site: no order
-      }
-    }
-  const t2::Point pa = t2::to_double(a), pb = t2::to_double(b);
-  if (!other) {
-    s.segments.push_back(t2::SceneSegment{scene_point(pa), scene_point(pb), 0, st});
-    return;
-  }
-  const t2::Point pm = t2::to_double(t2::antipode(m));
-  s.segments.push_back(t2::SceneSegment{scene_point(pa), scene_point(pm), 0, st});
-  s.segments.push_back(t2::SceneSegment{scene_point(pm), scene_point(pb), 0, st});
-}
-
-/// The bisector lines (no vertex) of the pairs `lines`, drawn into `s`.
-void draw_lines(const std::vector<t2::Point>& P, const std::vector<std::pair<Index, Index>>& lines, t2::Scene& s) {
-  for (auto [i, j] : lines) {
-    const t2::Point &a = P[i], &b = P[j];
-    t2::Point p(0, 1, 0), q(0, 0, 1);  // sites on different sides: Ω
-    if (t2::sign_of(a.w()) == t2::sign_of(b.w()) && a.w() != 0) {  // the perpendicular bisector
-      const double ax = a.x() / a.w(), ay = a.y() / a.w(), bx = b.x() / b.w(), by = b.y() / b.w();
-      p = t2::Point(a.w() > 0 ? 1 : -1, (ax + bx) / 2 * (a.w() > 0 ? 1 : -1), (ay + by) / 2 * (a.w() > 0 ? 1 : -1));
-      q = t2::Point(0, ay - by, bx - ax);
-    }
-    s.lines.push_back(t2::SceneLine{scene_point(p), scene_point(q), 0, style_of("color=red width=2 layer=1")});
-  }
-}
-
 /// The diagram as a scene: the edges in red, the vertices as red dots, the bisector lines.
 t2::Scene answer(const std::vector<t2::Point>& P, const t2::VoronoiDiagram& vd) {
-  t2::Scene s;
-  for (const auto& e : vd.edges) draw_edge(P, vd, e, s);
-  for (Index v = 0; v < vd.size(); ++v)
-    s.points.push_back(scene_point(t2::to_double(vd.vertex(v)), style_of("color=red marker=dot layer=2")));
-  draw_lines(P, vd.lines, s);
-  return s;
+  return algorithms::voronoi_scene(P, vd, style_of("color=red width=2 layer=1"),
+                                   style_of("color=red marker=dot layer=2"));
 }
 
 std::string listing(const t2::FortuneDiagram& fd) {
@@ -136,7 +86,7 @@ t2::Scene answer(const std::vector<t2::Point>& P, const t2::FortuneDiagram& fd) 
                                           scene_point(t2::to_double(reduced(r.end))), 0, st});
   const t2::SceneStyle dot = style_of("color=red marker=dot layer=2");
   for (Index v = 0; v < fd.size(); ++v) s.points.push_back(scene_point(t2::to_double(fd.vertex(v)), dot));
-  draw_lines(P, fd.lines, s);
+  algorithms::add_bisector_lines(P, fd.lines, style_of("color=red width=2 layer=1"), s);
   return s;
 }
 

@@ -1,6 +1,6 @@
-// The Voronoi diagram of T² (chapter 11, t2/voronoi/voronoi.hpp) and its front half by
-// Fortune's sweep (t2/voronoi/fortune.hpp): timed by `t2 bench` on points of the plane; Fortune's
-// sweep is animated (trace/fortune_recorder.hpp). Fortune's answer is the front half only (its vertices are the dual's front vertices),
+// The front half of the Voronoi diagram by Fortune's sweep (chapter 11, t2/voronoi/fortune.hpp):
+// timed by `t2 bench` on points of the plane and animated (trace/fortune_recorder.hpp); the
+// diagram of T² (t2/voronoi/voronoi.hpp), its problem "voronoi", is in voronoi_dual.cpp. Fortune's answer is the front half only (its vertices are the dual's front vertices),
 // so it is a problem of its own, "voronoi-front": the sizes `t2 bench` compares would differ.
 // Boost.Polygon's sweep is its peer `boost` (algorithms/peers.cpp), on the worker's doubles
 // rounded to integers; bench/bench_voronoi.cpp times it and CGAL's Delaunay dual on the same
@@ -12,7 +12,6 @@
 #include "t2/trace/fortune_recorder.hpp"
 #include "t2/trace/overlay.hpp"
 #include "t2/voronoi/fortune.hpp"
-#include "t2/voronoi/voronoi.hpp"
 
 namespace t2cli::algorithms {
 namespace {
@@ -62,16 +61,6 @@ void record_fortune(const Points& P, const std::string& name, tr::Recording& rec
   s.overlay = fortune_scene(P, fd);
   rec.add(std::move(s));
 }
-
-T2_PROBLEM({"voronoi", "vertices", Input::plane});
-
-T2_ALGORITHM({.name = "voronoi",  // what `t2 voronoi` runs
-              .problem = "voronoi",
-              .summary = "t2::voronoi: the dual of the Delaunay complex of T2, front and back vertices (Algorithm 11)",
-              .title = "the Voronoi diagram of T2 (the dual)",
-              .time = [](BenchInput& in) -> Timed {
-                return [&P = in.points] { return t2::voronoi(std::span<const t2::Point>(P)).size(); };
-              }});
 
 T2_PROBLEM({"voronoi-front", "front vertices", Input::plane});
 
