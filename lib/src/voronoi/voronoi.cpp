@@ -208,13 +208,18 @@ std::vector<Index> VoronoiDiagram::cell(Index s) const {
   // vertex where s is followed by b.
   std::unordered_map<Index, Index> after;   // the site after s at a vertex → that vertex
   std::unordered_map<Index, Index> before;  // vertex → the site before s there
-  for (Index v = 0; v < size(); ++v) {
+  const auto visit = [&](Index v) {
     const auto c = vertex_sites(v);
     for (std::size_t k = 0; k < c.size(); ++k)
       if (c[k] == s) {
         after[c[(k + 1) % c.size()]] = v;
         before[v] = c[(k + c.size() - 1) % c.size()];
       }
+  };
+  if (site_first.empty()) {
+    for (Index v = 0; v < size(); ++v) visit(v);
+  } else if (s + 1 < site_first.size()) {
+    for (Index k = site_first[s]; k < site_first[s + 1]; ++k) visit(site_vertices[k]);
   }
   std::vector<Index> out;
   if (before.empty()) return out;
@@ -228,12 +233,27 @@ std::vector<Index> VoronoiDiagram::cell(Index s) const {
 }
 //< voronoi-cell
 
-VoronoiDiagram voronoi(const DelaunayComplex& dc) { return dual(dc, dc.points); }
+namespace {
+// site_first and site_vertices (voronoi.hpp): each vertex listed under each of its cells, by a
+// counting sort of `cells`. O(cells.size()).
+VoronoiDiagram indexed(VoronoiDiagram vd) {
+  vd.site_first.assign(vd.sites.size() + 1, 0);
+  for (const Index s : vd.cells) ++vd.site_first[s + 1];
+  for (std::size_t s = 0; s < vd.sites.size(); ++s) vd.site_first[s + 1] += vd.site_first[s];
+  vd.site_vertices.resize(vd.cells.size());
+  std::vector<Index> at(vd.site_first.begin(), vd.site_first.end() - 1);
+  for (Index v = 0; v < vd.size(); ++v)
+    for (const Index s : vd.vertex_sites(v)) vd.site_vertices[at[s]++] = v;
+  return vd;
+}
+}  // namespace
+
+VoronoiDiagram voronoi(const DelaunayComplex& dc) { return indexed(dual(dc, dc.points)); }
 
 VoronoiDiagram voronoi(std::span<const Point> sites) {
   DelaunayComplex dc = delaunay_complex(sites);
   std::vector<Point> p = std::move(dc.points);
-  return dual(dc, std::move(p));
+  return indexed(dual(dc, std::move(p)));
 }
 
 }  // namespace t2

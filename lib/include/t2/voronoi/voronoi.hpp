@@ -74,6 +74,10 @@ struct VoronoiDiagram {
   std::vector<Edge> edges;                          ///< between two vertices
   std::vector<std::pair<Index, Index>> lines;       ///< bisectors without a vertex (two sites)
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept): sites owning no cell
+  /// The vertices of each site's cell, unordered: those of site s are
+  /// site_vertices[site_first[s] .. site_first[s + 1]). Filled by `voronoi`, so that `cell`
+  /// costs the size of the cell; empty in a diagram filled by hand (`cell` scans every vertex).
+  std::vector<Index> site_first, site_vertices;
 
   /// The number of Voronoi vertices.
   std::size_t size() const { return first.empty() ? cells.size() / 3 : first.size() - 1; }
@@ -87,7 +91,7 @@ struct VoronoiDiagram {
   /// The cell of site s as a polygon of T²: the vertices on its boundary, counter-clockwise
   /// around s (consecutive ones joined by an edge between s and a neighbour; `vertex(v)` gives
   /// their coordinates). Empty for a dropped duplicate or without vertices (fewer than three
-  /// distinct sites). By a scan of all vertices: O(cells.size()) a call.
+  /// distinct sites). O(the size of the cell) with `site_first`, else O(cells.size()).
   std::vector<Index> cell(Index s) const;
 };
 
