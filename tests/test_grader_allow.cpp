@@ -73,10 +73,15 @@ std::vector<Manifest> manifests() {
   return r;
 }
 
-// A header's text without its comments: a name in a comment defines nothing.
-std::string code_of(const fs::path& f) {
+// A header's text without its comments: a name in a comment defines nothing. Each header is
+// read once (the manifests share most of their headers: std::regex_replace over the same
+// headers for each of 31 manifests took most of the test's 42 s under the sanitizers).
+const std::string& code_of(const fs::path& f) {
   static const std::regex comments(R"(//[^\n]*|/\*[\s\S]*?\*/)");
-  return std::regex_replace(slurp(f), comments, " ");
+  static std::map<fs::path, std::string> done;
+  auto it = done.find(f);
+  if (it == done.end()) it = done.emplace(f, std::regex_replace(slurp(f), comments, " ")).first;
+  return it->second;
 }
 
 }  // namespace
@@ -125,6 +130,9 @@ TEST(GraderAllowList, NoAllowedHeaderDeclaresAForbiddenName) {
       const std::regex declares(pattern);
       for (const auto& [h, code] : text) {
         ++checked;
+        // Every match of `declares` holds `last` as written: a header without it declares nothing
+        // of that name (the regular expression is searched only where it could match).
+        if (code.find(last) == std::string::npos) continue;
         EXPECT_FALSE(std::regex_search(code, declares)) << m.dir.filename().string() << " forbids " << f << ", which its allowed " << h << " declares";
       }
     }

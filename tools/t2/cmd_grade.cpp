@@ -17,7 +17,7 @@ struct Options {
   std::string name;
   std::string submission = ".";
   std::optional<std::string> results, root;
-  int overall_limit = 900, compile_limit = 120, time_limit = 0;
+  int overall_limit = 900, compile_limit = 120, time_limit = 0, wall_limit = 0;
   std::string visibility = "hidden";
   bool quiet = false, unsafe = false;
 };
@@ -30,6 +30,7 @@ int grade(const Options& o) {
   opt.overall_limit = o.overall_limit;
   opt.compile_limit = o.compile_limit;
   opt.time_limit = o.time_limit;
+  opt.wall_limit = o.wall_limit;
   opt.unsafe = o.unsafe;
   const auto rep = t2grader::run_exercise(ex, sub, opt);
   if (o.results) t2::write_file_atomically(*o.results, t2grader::results_json(rep, o.visibility));
@@ -58,6 +59,11 @@ Action setup(Arguments& app) {
       ->type_name("SECONDS")
       ->check(PositiveNumber);
   app.add_option("--time-limit", o->time_limit, "CPU seconds per test (default: the manifest's)")
+      ->type_name("SECONDS")
+      ->check(PositiveNumber);
+  app.add_option("--wall-limit", o->wall_limit,
+                 "wall-clock seconds per test (default: twice the CPU seconds plus 2; the grader's\n"
+                 "own tests shorten it for submissions that only wait)")
       ->type_name("SECONDS")
       ->check(PositiveNumber);
   app.add_option("--hidden-visibility", o->visibility, "hidden or after_due_date")

@@ -1,8 +1,8 @@
 #pragma once
 // Building for the grader. Trusted code (the tests, the checker and driver mains, the probe) is
-// compiled outside the sandbox from the source tree, cached by content, and verified by its
-// SHA-256 on every use (a cached file that changed is rebuilt); the cache is never visible in
-// the sandbox. The submission is compiled AND linked inside the sandbox, without LTO, and its
+// compiled outside the sandbox from the source tree (GoogleTest's header precompiled once),
+// cached by content, and verified by its SHA-256 on every use (a cached file that changed is
+// rebuilt); the cache is never visible in the sandbox. The submission is compiled AND linked inside the sandbox, without LTO, and its
 // object is read (as untrusted data) between the two steps.
 
 #include <filesystem>

@@ -81,6 +81,7 @@ struct RunOptions {
   int compile_limit = 120;         ///< wall-clock seconds for compiling and linking the submission
   bool verbose = false;            ///< print progress to stderr
   int time_limit = 0;              ///< seconds of CPU per test; 0: the manifest's
+  int wall_limit = 0;              ///< wall-clock seconds per test; 0: twice the CPU seconds plus 2
   bool unsafe = false;             ///< grade even where no cgroup bounds a run's whole process tree
 };
 

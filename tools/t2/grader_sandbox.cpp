@@ -279,7 +279,9 @@ Prepared prepare_sandboxed(const SandboxRun& r) {
   std::string said = cg ? cg->summary() : std::string();
   if (hold && hold->watcher.joinable()) said += fmt::format(", CPU time of the tree {} s", r.tree_cpu_seconds);
   std::shared_ptr<const std::atomic<bool>> over = hold ? hold->over : std::make_shared<std::atomic<bool>>(false);
-  return {std::move(s), hold, said, over};
+  std::function<void()> kill;
+  if (cg) kill = [cg] { cg->kill_all(); };
+  return {std::move(s), hold, said, over, std::move(kill)};
 }
 
 t2proc::Result run_sandboxed(const SandboxRun& r) {

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -52,6 +53,7 @@ struct Prepared {
   std::string tree_limits;     ///< the cgroup limits in force ("" when there is no cgroup)
   std::shared_ptr<const std::atomic<bool>> out_of_cpu;  ///< set when the tree used its CPU time and was
                                                         ///< killed (never set without a cgroup)
+  std::function<void()> kill;  ///< kills the run's whole tree now (empty without a cgroup)
 };
 
 /// What protects the machine while student code runs, as probed.
