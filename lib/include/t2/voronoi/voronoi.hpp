@@ -74,10 +74,12 @@ struct VoronoiDiagram {
   std::vector<Edge> edges;                          ///< between two vertices
   std::vector<std::pair<Index, Index>> lines;       ///< bisectors without a vertex (two sites)
   std::vector<std::pair<Index, Index>> duplicates;  ///< (dropped, kept): sites owning no cell
-  /// The vertices of each site's cell, unordered: those of site s are
+  /// Where each site's vertices start in `site_vertices`: those of site s are
   /// site_vertices[site_first[s] .. site_first[s + 1]). Filled by `voronoi`, so that `cell`
   /// costs the size of the cell; empty in a diagram filled by hand (`cell` scans every vertex).
-  std::vector<Index> site_first, site_vertices;
+  std::vector<Index> site_first;
+  /// The vertices of each site's cell, unordered, one site after the other (`site_first`).
+  std::vector<Index> site_vertices;
 
   /// The number of Voronoi vertices.
   std::size_t size() const { return first.empty() ? cells.size() / 3 : first.size() - 1; }
