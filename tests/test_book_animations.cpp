@@ -94,7 +94,7 @@ TEST_F(BookAnimations, CheckRefusesLinksNoCommandWritesAndCommandsThatCannotRun)
 }
 
 // This repository: every algorithm of t2 animate has a page in the book, each made by one
-// command, and chapters 06-12 link pages that their commands write (the links resolve: `t2
+// command, and chapters 06-15 link pages that their commands write (the links resolve: `t2
 // book check`, BookCheck.ThisRepositoryIsInSync).
 TEST(BookAnimationsOfThisRepository, EveryAlgorithmIsAnimatedAndLinked) {
   const std::regex command(R"(t2 animate ([a-z0-9-]+) (\S+) -o ([a-z0-9-]+\.html))");
@@ -110,8 +110,8 @@ TEST(BookAnimationsOfThisRepository, EveryAlgorithmIsAnimatedAndLinked) {
   }
   EXPECT_EQ(algos,
             (std::set<std::string>{"chan", "closest-pair-divide", "delaunay", "emst", "fortune", "graham", "intersect",
-                                   "intersect-circular", "jarvis", "kdtree", "lec", "merge", "sec", "triangulate",
-                                   "triangulate-t2", "walk"}));
+                                   "intersect-circular", "jarvis", "kdtree", "lec", "merge", "sec", "trapezoid",
+                                   "triangulate", "triangulate-t2", "voronoi", "walk"}));
   EXPECT_EQ(linked, pages);
 }
 
