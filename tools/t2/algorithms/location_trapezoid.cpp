@@ -45,6 +45,14 @@ H3 unit(const H3& a) {
   return {a[0] / n, a[1] / n, a[2] / n};
 }
 
+// a × b: the line a ∨ b of two points (L·p = orient(a, b, p)), or the point of two lines.
+H3 cross(const H3& a, const H3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Point i of the map M, as a unit vector.
+H3 at(const TrapezoidMap& M, Index i) { return unit({M.point(i).w(), M.point(i).x(), M.point(i).y()}); }
+
 // The part of the convex region C of the front hemisphere (its corners in order) where L·v ≥ 0
 // (Sutherland–Hodgman). Where an edge u v crosses the line, the corner |L·u| v + |L·v| u: a
 // positive combination of its ends, so a point of the segment of T² between them. Two corners
@@ -78,26 +86,22 @@ std::vector<H3> cut(const std::vector<H3>& C, const H3& L, const H3& on) {
 // the input's) the antipodes of the corners. Empty for the first trapezoid (the whole side).
 std::vector<t2::Point> trapezoid_polygon(const TrapezoidMap& M, Index t, bool back) {
   const TrapezoidMap::Trapezoid& z = M.trapezoids()[t];
-  const auto at = [&](Index i) -> H3 { return unit({M.point(i).w(), M.point(i).x(), M.point(i).y()}); };
-  const auto join = [](const H3& a, const H3& b) -> H3 {  // L·p = orient(a, b, p)
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
   std::vector<H3> C{{0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {0, 0, -1}};
   bool bounded = false;
   if (z.bottom != TrapezoidMap::none) {
     const auto [a, b] = M.segment(z.bottom);
-    C = cut(C, join(at(a), at(b)), at(a)), bounded = true;
+    C = cut(C, cross(at(M, a), at(M, b)), at(M, a)), bounded = true;
   }
   if (z.top != TrapezoidMap::none) {
     const auto [a, b] = M.segment(z.top);
-    C = cut(C, join(at(b), at(a)), at(a)), bounded = true;
+    C = cut(C, cross(at(M, b), at(M, a)), at(M, a)), bounded = true;
   }
   if (z.leftp != TrapezoidMap::none) {  // x·w_l − x_l·w ≥ 0
-    const H3 l = at(z.leftp);
+    const H3 l = at(M, z.leftp);
     C = cut(C, {-l[1], l[0], 0}, l), bounded = true;
   }
   if (z.rightp != TrapezoidMap::none) {
-    const H3 r = at(z.rightp);
+    const H3 r = at(M, z.rightp);
     C = cut(C, {r[1], -r[0], 0}, r), bounded = true;
   }
   std::vector<t2::Point> out;
@@ -118,14 +122,11 @@ std::vector<t2::Point> trapezoid_polygon(const TrapezoidMap& M, Index t, bool ba
 void add_wall(t2::Scene& o, const TrapezoidMap& M, Index t, bool back) {
   const TrapezoidMap::Trapezoid& z = M.trapezoids()[t];
   if (z.leftp == TrapezoidMap::none) return;
-  const auto at = [&](Index i) -> H3 { return unit({M.point(i).w(), M.point(i).x(), M.point(i).y()}); };
-  const H3 l = at(z.leftp), V{-l[1], l[0], 0};
+  const H3 l = at(M, z.leftp), V{-l[1], l[0], 0};
   const auto end = [&](Index s, double up) -> std::optional<H3> {  // the wall meets s, or Ω
     if (s == TrapezoidMap::none) return H3{0, 0, up};
     const auto [a, b] = M.segment(s);
-    const H3 A = at(a), B = at(b);
-    const H3 L{A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
-    H3 m{L[1] * V[2] - L[2] * V[1], L[2] * V[0] - L[0] * V[2], L[0] * V[1] - L[1] * V[0]};
+    H3 m = cross(cross(at(M, a), at(M, b)), V);
     if (!(std::abs(m[0]) > 0)) return std::nullopt;
     if (m[0] < 0) m = {-m[0], -m[1], -m[2]};
     return unit(m);
